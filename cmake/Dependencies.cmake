@@ -1,0 +1,25 @@
+# Every dependency is a Debian bookworm package; scripts/setup.sh installs the missing ones.
+find_package(glm CONFIG REQUIRED)
+find_package(tinyobjloader CONFIG REQUIRED)
+find_package(assimp CONFIG REQUIRED)
+find_package(ZLIB REQUIRED)
+find_package(TBB CONFIG REQUIRED)
+find_package(CLI11 CONFIG REQUIRED)
+find_package(OpenImageIO CONFIG REQUIRED)
+
+# Debian's OpenImageIO config names /usr/include/opencv4 as an include directory, and CMake
+# refuses a missing one; we never use OpenCV, so drop it instead of installing libopencv-dev.
+foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+  get_target_property(dirs OpenImageIO::OpenImageIO ${prop})
+  if(dirs)
+    list(FILTER dirs EXCLUDE REGEX "opencv4")
+    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${prop} "${dirs}")
+  endif()
+endforeach()
+
+if(CONVRAY_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(CONVRAY_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

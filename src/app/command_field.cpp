@@ -1,0 +1,111 @@
+#include "app/command_field.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <istream>
+#include <optional>
+#include <ostream>
+#include <string_view>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "app/soup_triangles.hpp"
+#include "implicit/mesh_field.hpp"
+#include "mesh/load.hpp"
+#include "util/error.hpp"
+
+namespace convray::app {
+
+namespace {
+
+constexpr size_t kLinesPerBlock = 1 << 16;
+
+// Parses "x y z" (spaces or tabs, nothing else). Returns an error message, or nothing.
+std::optional<std::string> parse_point(std::string_view line, Vec3& out) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // tolerate CRLF files
+  const char* p = line.data();
+  const char* end = p + line.size();
+  const auto skip_blanks = [&] { while (p < end && (*p == ' ' || *p == '\t')) ++p; };
+  const char* names[] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    skip_blanks();
+    if (p == end) {
+      return "expected three numbers 'x y z', found " + std::to_string(k) +
+             (k == 1 ? " number" : " numbers");
+    }
+    double v = 0.0;
+    const char* start = p;
+    if (*p == '+') ++p;  // from_chars rejects a leading '+', people write it
+    const auto [next, ec] = std::from_chars(p, end, v);
+    if (ec != std::errc() || (next < end && *next != ' ' && *next != '\t')) {
+      const char* stop = start;
+      while (stop < end && *stop != ' ' && *stop != '\t') ++stop;
+      return std::string(names[k]) + " is not a number: '" + std::string(start, stop) + "'";
+    }
+    if (!std::isfinite(v)) return std::string(names[k]) + " is not finite";
+    out[k] = v;
+    p = next;
+  }
+  skip_blanks();
+  if (p != end) return "unexpected text after 'x y z': '" + std::string(p, end) + "'";
+  return std::nullopt;
+}
+
+void append_number(std::string& out, double v) {
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v,
+                                       std::chars_format::general, 17);
+  out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+}  // namespace
+
+int run_field(const FieldOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
+  try {
+    const mesh::LoadedMesh loaded = mesh::load_mesh(options.mesh_path);
+    const implicit::MeshField field(soup_triangles(loaded.soup), options.radius, options.strength);
+
+    std::vector<std::string> lines;
+    std::vector<Vec3> points;
+    std::vector<std::string> answers;
+    size_t line_number = 0;
+    for (bool more = true; more;) {
+      // Read a block, parse it serially (the first bad line stops everything after it),
+      // evaluate it in parallel, print it in order.
+      lines.clear();
+      std::string line;
+      while (lines.size() < kLinesPerBlock && (more = bool(std::getline(in, line)))) {
+        lines.push_back(std::move(line));
+      }
+      points.resize(lines.size());
+      std::optional<std::string> problem;
+      size_t good = 0;
+      for (; good < lines.size(); ++good) {
+        if ((problem = parse_point(lines[good], points[good]))) break;
+      }
+      answers.assign(good, {});
+      tbb::parallel_for(size_t(0), good, [&](size_t i) {
+        const field::FieldSample s = field.field(points[i]);
+        std::string& a = answers[i];
+        append_number(a, s.value);
+        for (int k = 0; k < 3; ++k) a += ' ', append_number(a, s.gradient[k]);
+        a += '\n';
+      });
+      for (const std::string& a : answers) out << a;
+      if (problem) {
+        out.flush();
+        err << "stdin:" << line_number + good + 1 << ": " << *problem << "\n";
+        return 2;
+      }
+      line_number += lines.size();
+    }
+    out.flush();
+    return 0;
+  } catch (const InputError& e) {
+    err << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace convray::app

@@ -1,0 +1,105 @@
+// convray command line: parse the arguments, hand each subcommand to its run_* function.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/command_field.hpp"
+#include "app/command_info.hpp"
+#include "app/command_slice.hpp"
+
+namespace {
+
+constexpr const char* kDescription =
+    "convray - convolution surfaces of polygon soups and skeletons, in closed form.\n"
+    "\n"
+    "Examples:\n"
+    "  convray info scenes/models/soup.obj\n"
+    "  echo '0 0 0' | convray field --mesh scenes/models/soup.obj --radius 0.2\n";
+
+// A finite, strictly positive number: radii and sizes.
+const auto kPositive = CLI::Validator(
+    [](const std::string& text) -> std::string {
+      const double v = std::stod(text);
+      return std::isfinite(v) && v > 0.0 ? "" : "must be a finite number > 0, got " + text;
+    },
+    "POSITIVE");
+const auto kFinite = CLI::Validator(
+    [](const std::string& text) -> std::string {
+      return std::isfinite(std::stod(text)) ? "" : "must be a finite number, got " + text;
+    },
+    "FINITE");
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{kDescription, "convray"};
+  app.set_version_flag("--version", "convray 0.1.0");
+  app.require_subcommand(1);
+  app.fallthrough(false);
+
+  std::string info_path;
+  CLI::App* info = app.add_subcommand(
+      "info", "Report a mesh: triangles, vertices, dropped faces, bounds, edge statistics, "
+              "components; what to check before choosing a radius.");
+  info->add_option("MESH", info_path, "mesh file: .obj .ply .stl .off, optionally .gz")
+      ->required();
+
+  convray::app::FieldOptions field_options;
+  CLI::App* field = app.add_subcommand(
+      "field", "Evaluate the summed raw field of a mesh's triangles at points read from "
+               "standard input ('x y z' per line); writes 'F dF/dx dF/dy dF/dz' per line, "
+               "17 significant digits. Exit code 2 and 'stdin:LINE: ...' on a malformed line.");
+  field->add_option("--mesh", field_options.mesh_path, "mesh file")->required();
+  field->add_option("--radius", field_options.radius, "kernel radius R (support of the kernel)")
+      ->required()
+      ->check(kPositive);
+  field->add_option("--strength", field_options.strength, "strength s (default 1)")
+      ->check(kFinite);
+
+  convray::app::SliceOptions slice_options;
+  std::string slice_size = "800x600";
+  CLI::App* slice = app.add_subcommand(
+      "slice", "Picture the field on a plane through a mesh: colour by F/T, the surface F = T "
+               "as a white contour, the triangles' cross-section in black.");
+  slice->add_option("MESH", slice_options.mesh_path, "mesh file")->required();
+  slice->add_option("--radius", slice_options.radius, "kernel radius R")->required()->check(kPositive);
+  slice->add_option("--strength", slice_options.strength, "strength s (default 1)")->check(kFinite);
+  auto* offset = slice->add_option("--offset", slice_options.offset,
+                                   "surface at distance D from flat regions (default R/2)");
+  offset->check(kFinite);
+  slice->add_option("--threshold", slice_options.threshold, "raw threshold T")
+      ->check(kFinite)
+      ->excludes(offset);
+  slice->add_option("--axis", slice_options.axis, "the plane's normal axis: x, y or z")
+      ->check(CLI::IsMember({'x', 'y', 'z'}));
+  slice->add_option("--at", slice_options.at, "the plane's coordinate on that axis")->check(kFinite);
+  slice->add_option("--size", slice_size, "image size WIDTHxHEIGHT (default 800x600)");
+  slice->add_option("-o,--output", slice_options.output, "image file (.png, .exr, .tif, ...)");
+
+  try {
+    app.parse(argc, argv);
+    if (*slice && (std::sscanf(slice_size.c_str(), "%dx%d", &slice_options.width,
+                               &slice_options.height) != 2 ||
+                   slice_options.width < 1 || slice_options.height < 1 ||
+                   slice_options.width > 32768 || slice_options.height > 32768)) {
+      throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 800x600, got " + slice_size);
+    }
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "convray: " << e.what() << "\nRun 'convray --help' for usage.\n";
+    return 2;
+  }
+
+  if (*info) return convray::app::run_info(info_path, std::cout, std::cerr);
+  if (*slice) return convray::app::run_slice(slice_options, std::cout, std::cerr);
+  if (*field) return convray::app::run_field(field_options, std::cin, std::cout, std::cerr);
+  return 2;
+}

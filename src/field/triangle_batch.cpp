@@ -1,0 +1,307 @@
+#include "field/triangle_batch.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+// glibc's libmvec provides SIMD variants of atan2 (_ZGVdN4vv_atan2, _ZGVeN8vv_atan2, ...);
+// declaring the simd attribute lets the vectorizer call them from the pie-slice loop. This
+// file is compiled with -fno-math-errno so atan2 counts as a pure function.
+extern "C" double atan2(double, double) noexcept __attribute__((simd("notinbranch")));
+
+namespace convray::field {
+
+struct TriangleBatch::Accumulator {
+  double value = 0.0;
+  Vec3 gradient{0.0};
+  double* per_triangle = nullptr;  // when set, each triangle's value lands here
+};
+
+TriangleBatch::TriangleBatch(std::span<const Triangle> triangles) {
+  const size_t n = triangles.size();
+  for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->assign(n, 0.0);
+  for (EdgeArrays& e : edges_) {
+    for (auto* v : {&e.vx, &e.vy, &e.vz, &e.ux, &e.uy, &e.uz, &e.mx, &e.my, &e.mz, &e.length}) {
+      v->assign(n, 0.0);
+    }
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 v[3] = {triangles[i].a, triangles[i].b, triangles[i].c};
+    const Vec3 cross = glm::cross(v[1] - v[0], v[2] - v[0]);
+    const double cross_length = glm::length(cross);
+    // Zero-area triangles keep all-zero lanes (no NaN) and weight 0.
+    if (!(cross_length > 0.0) || !std::isfinite(cross_length)) continue;
+    const Vec3 normal = cross / cross_length;
+    nx_[i] = normal.x, ny_[i] = normal.y, nz_[i] = normal.z;
+    weight_[i] = 1.0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 edge = v[(k + 1) % 3] - v[k];
+      const double length = glm::length(edge);
+      const Vec3 u = edge / length;
+      const Vec3 m = glm::cross(u, normal);
+      EdgeArrays& e = edges_[k];
+      e.vx[i] = v[k].x, e.vy[i] = v[k].y, e.vz[i] = v[k].z;
+      e.ux[i] = u.x, e.uy[i] = u.y, e.uz[i] = u.z;
+      e.mx[i] = m.x, e.my[i] = m.y, e.mz[i] = m.z;
+      e.length[i] = length;
+    }
+  }
+}
+
+namespace detail {
+
+constexpr size_t kChunk = 64;
+
+// What phase 1 leaves for each lane of a chunk; phase 2 adds the pie-slice angles.
+struct ChunkState {
+  double inside[kChunk];        // Σ edges of the inside-the-disk parts (times 6R^4)
+  double inside_dr0[kChunk];    // their derivative with respect to r0^2
+  double gx[kChunk], gy[kChunk], gz[kChunk];  // in-plane gradient, all but nothing from θ
+  double pie_y[3][kChunk], pie_x[3][kChunk];  // per edge: θ = atan2(pie_y, pie_x)
+  double r0sq[kChunk], h[kChunk], scale[kChunk];
+  double nx[kChunk], ny[kChunk], nz[kChunk];
+  bool touches[kChunk], o_inside[kChunk];
+};
+
+// Raw pointers to one edge's arrays, so the vectorizer sees plain strided loads.
+struct EdgeView {
+  const double *vx, *vy, *vz, *ux, *uy, *uz, *mx, *my, *mz, *length;
+};
+
+// Per-lane partial results of one edge (see triangle.cpp for the mathematics).
+struct EdgeTerm {
+  double inside = 0.0, inside_dr0 = 0.0, pie_y = 0.0, pie_x = 0.0;
+  double gx = 0.0, gy = 0.0, gz = 0.0;
+  bool touches = false, o_outside = false;
+};
+
+// kWhollyInside: the caller knows the triangle lies inside the support sphere, so nothing is
+// clipped and there are no pie slices (the common case for large radii).
+template <bool kGradient, bool kWhollyInside>
+[[gnu::always_inline]] inline EdgeTerm edge_term(const EdgeView& e, size_t i, const Vec3& p,
+                                                 double r0sq, double r6) {
+  EdgeTerm out;
+  const double rx = e.vx[i] - p.x, ry = e.vy[i] - p.y, rz = e.vz[i] - p.z;
+  const double d = rx * e.mx[i] + ry * e.my[i] + rz * e.mz[i];
+  const double sa = rx * e.ux[i] + ry * e.uy[i] + rz * e.uz[i];
+  const double sb = sa + e.length[i];
+  const double d2 = d * d;
+  const double w2 = r0sq - d2;
+  const double w = kWhollyInside ? 0.0 : std::sqrt(w2 > 0.0 ? w2 : 0.0);
+  const double s1 = kWhollyInside ? sa : std::max(sa, -w);
+  const double s2_clip = kWhollyInside ? sb : std::min(sb, w);
+  const bool has_inside = kWhollyInside || s1 < s2_clip;
+  const double s2 = has_inside ? s2_clip : s1;
+  out.touches = has_inside;
+  out.o_outside = d < 0.0;
+  const double c1 = 3.0 * r0sq * r0sq - 3.0 * r0sq * d2 + d2 * d2;
+  const double c3 = r0sq - (2.0 / 3.0) * d2;
+  const double s1_2 = s1 * s1, s2_2 = s2 * s2;
+  const double delta1 = s2 - s1;
+  const double delta3 = s2 * s2_2 - s1 * s1_2;
+  const double delta5 = s2 * s2_2 * s2_2 - s1 * s1_2 * s1_2;
+  const double poly = c1 * delta1 - c3 * delta3 + 0.2 * delta5;
+  out.inside = d * poly;
+  if constexpr (kWhollyInside) {
+    if constexpr (kGradient) {
+      const double dd = poly + d * ((-6.0 * r0sq * d + 4.0 * d2 * d) * delta1 + (4.0 / 3.0) * d * delta3);
+      const double ds = d * (3.0 * c3 * (s1_2 - s2_2) + s2_2 * s2_2 - s1_2 * s1_2);
+      out.inside_dr0 = d * ((6.0 * r0sq - 3.0 * d2) * delta1 - delta3);
+      out.gx = -(dd * e.mx[i] + ds * e.ux[i]);
+      out.gy = -(dd * e.my[i] + ds * e.uy[i]);
+      out.gz = -(dd * e.mz[i] + ds * e.uz[i]);
+    }
+    return out;
+  }
+  // Pie pieces [a1, b1] left of -w and [a2, b2] right of +w (empty ones have a == b); their
+  // angles add without wrapping since together they subtend less than π.
+  const double a1 = std::min(sa, -w), b1 = std::min(sb, -w);
+  const double a2 = std::max(sa, w), b2 = std::max(sb, w);
+  const double y1 = d * (b1 - a1), x1 = d2 + a1 * b1;
+  const double y2 = d * (b2 - a2), x2 = d2 + a2 * b2;
+  out.pie_y = y1 * x2 + y2 * x1;
+  out.pie_x = x1 * x2 - y1 * y2;
+  if constexpr (kGradient) {
+    // ∂/∂d and ∂/∂s (s_begin and s_end move together); the ±w bounds are constants (the
+    // kernel vanishes with zero slope there). d and s move with P as -m and -u.
+    double dd = poly + d * ((-6.0 * r0sq * d + 4.0 * d2 * d) * delta1 + (4.0 / 3.0) * d * delta3);
+    double ds = 0.0;
+    ds -= (has_inside & (sa > -w)) ? d * (c1 - 3.0 * c3 * s1_2 + s1_2 * s1_2) : 0.0;
+    ds += (has_inside & (sb < w)) ? d * (c1 - 3.0 * c3 * s2_2 + s2_2 * s2_2) : 0.0;
+    out.inside_dr0 = d * ((6.0 * r0sq - 3.0 * d2) * delta1 - delta3);
+    // Subtended angle of [a, b]: ∂θ/∂a = -d/(d²+a²), ∂θ/∂b = d/(d²+b²), ∂θ/∂d = a/(d²+a²) - b/(d²+b²).
+    const auto ratio = [](double num, double den) { return den > 0.0 ? num / den : 0.0; };
+    const double da1 = d2 + a1 * a1, db1 = d2 + b1 * b1;
+    const double da2 = d2 + a2 * a2, db2 = d2 + b2 * b2;
+    const double pie_dd = ratio(a1, da1) - ratio(b1, db1) + ratio(a2, da2) - ratio(b2, db2);
+    double pie_ds = 0.0;
+    pie_ds -= std::abs(sa) > w ? ratio(d, d2 + sa * sa) : 0.0;
+    pie_ds += std::abs(sb) > w ? ratio(d, d2 + sb * sb) : 0.0;
+    dd += r6 * pie_dd;
+    ds += r6 * pie_ds;
+    out.gx = -(dd * e.mx[i] + ds * e.ux[i]);
+    out.gy = -(dd * e.my[i] + ds * e.uy[i]);
+    out.gz = -(dd * e.mz[i] + ds * e.uz[i]);
+  }
+  return out;
+}
+
+}  // namespace detail
+
+using detail::ChunkState;
+using detail::EdgeTerm;
+using detail::EdgeView;
+using detail::kChunk;
+
+template <bool kGradient, bool kWhollyInside, class Index>
+void TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t base,
+                              size_t lanes, Index index, const EdgeView* views,
+                              ChunkState& st) const {
+  const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
+#pragma omp simd
+  for (size_t t = 0; t < lanes; ++t) {
+    const size_t i = index(base + t);
+    const double nx = nxs[i], ny = nys[i], nz = nzs[i];
+    const double h =
+        (p.x - views[0].vx[i]) * nx + (p.y - views[0].vy[i]) * ny + (p.z - views[0].vz[i]) * nz;
+    const double r0sq_raw = r2 - h * h;
+    const bool in_range = r0sq_raw > 0.0;
+    const double r0sq = in_range ? r0sq_raw : 0.0;
+    const double r6 = r0sq * r0sq * r0sq;
+    const EdgeTerm e0 = detail::edge_term<kGradient, kWhollyInside>(views[0], i, p, r0sq, r6);
+    const EdgeTerm e1 = detail::edge_term<kGradient, kWhollyInside>(views[1], i, p, r0sq, r6);
+    const EdgeTerm e2 = detail::edge_term<kGradient, kWhollyInside>(views[2], i, p, r0sq, r6);
+    st.inside[t] = e0.inside + e1.inside + e2.inside;
+    st.inside_dr0[t] = e0.inside_dr0 + e1.inside_dr0 + e2.inside_dr0;
+    st.gx[t] = e0.gx + e1.gx + e2.gx;
+    st.gy[t] = e0.gy + e1.gy + e2.gy;
+    st.gz[t] = e0.gz + e1.gz + e2.gz;
+    st.pie_y[0][t] = e0.pie_y, st.pie_y[1][t] = e1.pie_y, st.pie_y[2][t] = e2.pie_y;
+    st.pie_x[0][t] = e0.pie_x, st.pie_x[1][t] = e1.pie_x, st.pie_x[2][t] = e2.pie_x;
+    st.r0sq[t] = r0sq, st.h[t] = h;
+    st.nx[t] = nx, st.ny[t] = ny, st.nz[t] = nz;
+    st.scale[t] = in_range ? ws[i] * inv_norm : 0.0;
+    st.touches[t] = e0.touches | e1.touches | e2.touches;
+    st.o_inside[t] = !(e0.o_outside | e1.o_outside | e2.o_outside);
+  }
+}
+
+template <class Index>
+bool TriangleBatch::wholly_inside(const Vec3& p, double r2, size_t base, size_t lanes,
+                                  Index index) const {
+  int outside = 0;
+  const EdgeArrays* e = edges_;
+#pragma omp simd reduction(+ : outside)
+  for (size_t t = 0; t < lanes; ++t) {
+    const size_t i = index(base + t);
+    double far2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double dx = e[k].vx[i] - p.x, dy = e[k].vy[i] - p.y, dz = e[k].vz[i] - p.z;
+      far2 = std::max(far2, dx * dx + dy * dy + dz * dz);
+    }
+    outside += far2 < r2 ? 0 : 1;
+  }
+  return outside == 0;
+}
+
+template <bool kGradient, class Index>
+void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index index,
+                             Accumulator& acc) const {
+  const double r2 = radius * radius;
+  const double inv_norm = 1.0 / (6.0 * r2 * r2);
+  EdgeView views[3];
+  for (int k = 0; k < 3; ++k) {
+    const EdgeArrays& e = edges_[k];
+    views[k] = {e.vx.data(), e.vy.data(), e.vz.data(), e.ux.data(), e.uy.data(),
+                e.uz.data(), e.mx.data(), e.my.data(), e.mz.data(), e.length.data()};
+  }
+  ChunkState st;
+  for (size_t base = 0; base < count; base += kChunk) {
+    const size_t lanes = std::min(kChunk, count - base);
+    // Phase 1, per lane: height, disk radius, and the three edges' terms. Chunks whose
+    // triangles all lie inside the support sphere take the lean path.
+    if (wholly_inside(p, r2, base, lanes, index)) {
+      phase_one<kGradient, true>(p, r2, inv_norm, base, lanes, index, views, st);
+    } else {
+      phase_one<kGradient, false>(p, r2, inv_norm, base, lanes, index, views, st);
+    }
+    // Phase 2: the pie angles (the only transcendental work), skipped when no lane is clipped.
+    bool any_pie = false;
+    for (size_t t = 0; t < lanes; ++t) {
+      any_pie = any_pie || (st.scale[t] != 0.0 && st.touches[t] &&
+                            (st.pie_y[0][t] != 0.0 || st.pie_y[1][t] != 0.0 || st.pie_y[2][t] != 0.0));
+    }
+    double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
+#pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
+    for (size_t t = 0; t < lanes; ++t) {
+      const double theta = any_pie ? atan2(st.pie_y[0][t], st.pie_x[0][t]) +
+                                         atan2(st.pie_y[1][t], st.pie_x[1][t]) +
+                                         atan2(st.pie_y[2][t], st.pie_x[2][t])
+                                   : 0.0;
+      const double r0sq = st.r0sq[t];
+      const double r4 = r0sq * r0sq;
+      // No edge reaches the disk: it is wholly inside the triangle or wholly outside.
+      const double whole = st.o_inside[t] ? 2.0 * kPi : 0.0;
+      const double value = st.touches[t] ? st.inside[t] + r4 * r0sq * theta : r4 * r0sq * whole;
+      sum += st.scale[t] * value;
+      if (acc.per_triangle) acc.per_triangle[base + t] = st.scale[t] * value;
+      if constexpr (kGradient) {
+        const double inplane = st.touches[t] ? 1.0 : 0.0;
+        const double dr0 = st.touches[t] ? st.inside_dr0[t] + 3.0 * r4 * theta : 3.0 * r4 * whole;
+        const double dn = -2.0 * st.h[t] * dr0;  // r0^2 = R^2 - h^2 moves with P as -2h n
+        sgx += st.scale[t] * (inplane * st.gx[t] + dn * st.nx[t]);
+        sgy += st.scale[t] * (inplane * st.gy[t] + dn * st.ny[t]);
+        sgz += st.scale[t] * (inplane * st.gz[t] + dn * st.nz[t]);
+      }
+    }
+    acc.value += sum;
+    acc.gradient += Vec3(sgx, sgy, sgz);
+  }
+}
+
+namespace {
+struct Contiguous {
+  size_t operator()(size_t t) const { return t; }
+};
+struct Listed {
+  const uint32_t* list;
+  size_t operator()(size_t t) const { return list[t]; }
+};
+}  // namespace
+
+double TriangleBatch::value(const Vec3& p, double radius) const {
+  Accumulator acc;
+  evaluate<false>(p, radius, size(), Contiguous{}, acc);
+  return acc.value;
+}
+
+FieldSample TriangleBatch::field(const Vec3& p, double radius) const {
+  Accumulator acc;
+  evaluate<true>(p, radius, size(), Contiguous{}, acc);
+  return {acc.value, acc.gradient};
+}
+
+double TriangleBatch::value(const Vec3& p, double radius, std::span<const uint32_t> subset) const {
+  Accumulator acc;
+  evaluate<false>(p, radius, subset.size(), Listed{subset.data()}, acc);
+  return acc.value;
+}
+
+FieldSample TriangleBatch::field(const Vec3& p, double radius,
+                                 std::span<const uint32_t> subset) const {
+  Accumulator acc;
+  evaluate<true>(p, radius, subset.size(), Listed{subset.data()}, acc);
+  return {acc.value, acc.gradient};
+}
+
+void TriangleBatch::values(const Vec3& p, double radius, std::span<double> out) const {
+  Accumulator acc;
+  acc.per_triangle = out.data();
+  evaluate<false>(p, radius, std::min(size(), out.size()), Contiguous{}, acc);
+}
+
+void TriangleBatch::values(std::span<const Vec3> points, double radius,
+                           std::span<double> out) const {
+  for (size_t k = 0; k < points.size() && k < out.size(); ++k) out[k] = value(points[k], radius);
+}
+
+}  // namespace convray::field

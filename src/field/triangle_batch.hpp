@@ -1,0 +1,60 @@
+#pragma once
+// Triangles prepared for batched field evaluation: structure-of-arrays, one SIMD lane per
+// triangle, edge frames precomputed. Same mathematics as triangle.hpp (the exact scalar twin
+// that tests compare this with); evaluation is branch-free per lane, and the atan2 of the pie
+// slices runs only for chunks where some triangle is clipped by the support sphere.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "field/sample.hpp"
+#include "field/triangle.hpp"
+
+namespace convray::field {
+
+namespace detail {
+struct EdgeView;
+struct ChunkState;
+}  // namespace detail
+
+class TriangleBatch {
+ public:
+  TriangleBatch() = default;
+  explicit TriangleBatch(std::span<const Triangle> triangles);
+
+  size_t size() const { return weight_.size(); }
+
+  // Sum of the raw fields (strength 1) of all triangles, or of the listed ones.
+  double value(const Vec3& p, double radius) const;
+  FieldSample field(const Vec3& p, double radius) const;
+  double value(const Vec3& p, double radius, std::span<const uint32_t> subset) const;
+  FieldSample field(const Vec3& p, double radius, std::span<const uint32_t> subset) const;
+
+  // One value per triangle (out.size() == size()).
+  void values(const Vec3& p, double radius, std::span<double> out) const;
+  // The summed field at many points (out.size() == points.size()).
+  void values(std::span<const Vec3> points, double radius, std::span<double> out) const;
+
+ private:
+  struct EdgeArrays {
+    std::vector<double> vx, vy, vz;  // start vertex
+    std::vector<double> ux, uy, uz;  // unit direction
+    std::vector<double> mx, my, mz;  // in-plane unit normal, pointing into the triangle
+    std::vector<double> length;
+  };
+  struct Accumulator;
+  template <bool kGradient, class Index>
+  void evaluate(const Vec3& p, double radius, size_t count, Index index,
+                Accumulator& acc) const;
+  template <class Index>
+  bool wholly_inside(const Vec3& p, double r2, size_t base, size_t lanes, Index index) const;
+  template <bool kGradient, bool kWhollyInside, class Index>
+  void phase_one(const Vec3& p, double r2, double inv_norm, size_t base, size_t lanes,
+                 Index index, const detail::EdgeView* views, detail::ChunkState& st) const;
+
+  std::vector<double> nx_, ny_, nz_;  // unit normal (zero for zero-area triangles)
+  std::vector<double> weight_;        // 1, or 0 for zero-area triangles
+  EdgeArrays edges_[3];
+};
+
+}  // namespace convray::field

@@ -1,0 +1,36 @@
+#pragma once
+// A uniform grid over a set of boxes (each primitive's support: its bounding box grown by R),
+// answering "which primitives can be non-zero at point P" with one cell lookup. A stand-in
+// point query until the Embree-based accel/ module exists; the cell lists are conservative.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "util/math.hpp"
+
+namespace convray::implicit {
+
+class SupportGrid {
+ public:
+  SupportGrid() = default;
+  // boxes[i] is the support box of primitive i; cell size at least min_cell.
+  SupportGrid(std::span<const Box3> boxes, double min_cell);
+
+  // Indices of every primitive whose support box contains p (and possibly a few more).
+  std::span<const uint32_t> candidates(const Vec3& p) const;
+
+  size_t cell_count() const { return cell_start_.empty() ? 0 : cell_start_.size() - 1; }
+  size_t entry_count() const { return entries_.size(); }
+
+ private:
+  glm::ivec3 cell_of(const Vec3& p) const;
+  size_t linear(const glm::ivec3& c) const;
+
+  Box3 bounds_;
+  double cell_size_ = 1.0;
+  glm::ivec3 dims_{0};
+  std::vector<uint32_t> cell_start_;  // CSR: cell c holds entries_[cell_start_[c] .. [c+1])
+  std::vector<uint32_t> entries_;
+};
+
+}  // namespace convray::implicit

@@ -1,0 +1,36 @@
+#pragma once
+// Errors that point at their cause: a file, and where it applies a line and column in it.
+#include <stdexcept>
+#include <string>
+
+namespace convray {
+
+struct SourceLoc {
+  std::string file;
+  int line = 0;    // 1-based; 0 when the error concerns the whole file
+  int column = 0;  // 1-based; 0 when unknown
+
+  // "file", "file:line" or "file:line:col", as compilers print them.
+  std::string str() const {
+    std::string s = file;
+    if (line > 0) s += ":" + std::to_string(line);
+    if (line > 0 && column > 0) s += ":" + std::to_string(column);
+    return s;
+  }
+};
+
+// An error caused by the user's input (scene, mesh, command line): reported, never a crash.
+class InputError : public std::runtime_error {
+ public:
+  InputError(SourceLoc loc, const std::string& message)
+      : std::runtime_error(loc.str() + ": " + message), loc_(std::move(loc)), message_(message) {}
+
+  const SourceLoc& loc() const { return loc_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  SourceLoc loc_;
+  std::string message_;
+};
+
+}  // namespace convray
