@@ -93,14 +93,15 @@ template <bool kGradient, bool kWhollyInside>
   const double s2 = has_inside ? s2_clip : s1;
   out.touches = has_inside;
   out.o_outside = d < 0.0;
-  const double c1 = 3.0 * r0sq * r0sq - 3.0 * r0sq * d2 + d2 * d2;
+  const double c1 = 3.0 * r0sq * (r0sq - d2) + d2 * d2;
   const double c3 = r0sq - (2.0 / 3.0) * d2;
   const double s1_2 = s1 * s1, s2_2 = s2 * s2;
+  // poly = G(s2) - G(s1) with G(s) = c1 s - c3 s^3 + s^5/5, in Horner form.
+  const double poly = s2 * (c1 + s2_2 * (0.2 * s2_2 - c3)) - s1 * (c1 + s1_2 * (0.2 * s1_2 - c3));
   const double delta1 = s2 - s1;
-  const double delta3 = s2 * s2_2 - s1 * s1_2;
-  const double delta5 = s2 * s2_2 * s2_2 - s1 * s1_2 * s1_2;
-  const double poly = c1 * delta1 - c3 * delta3 + 0.2 * delta5;
-  out.inside = d * poly;
+  const double delta3 = kGradient ? s2 * s2_2 - s1 * s1_2 : 0.0;
+  // Mask, don't trust s1 == s2 to give 0: with FMA contraction G(s) - G(s) leaves a residue.
+  out.inside = has_inside ? d * poly : 0.0;
   if constexpr (kWhollyInside) {
     if constexpr (kGradient) {
       const double dd = poly + d * ((-6.0 * r0sq * d + 4.0 * d2 * d) * delta1 + (4.0 / 3.0) * d * delta3);
@@ -123,11 +124,13 @@ template <bool kGradient, bool kWhollyInside>
   if constexpr (kGradient) {
     // ∂/∂d and ∂/∂s (s_begin and s_end move together); the ±w bounds are constants (the
     // kernel vanishes with zero slope there). d and s move with P as -m and -u.
-    double dd = poly + d * ((-6.0 * r0sq * d + 4.0 * d2 * d) * delta1 + (4.0 / 3.0) * d * delta3);
+    double dd = has_inside ? poly + d * ((-6.0 * r0sq * d + 4.0 * d2 * d) * delta1 +
+                                         (4.0 / 3.0) * d * delta3)
+                           : 0.0;
     double ds = 0.0;
     ds -= (has_inside & (sa > -w)) ? d * (c1 - 3.0 * c3 * s1_2 + s1_2 * s1_2) : 0.0;
     ds += (has_inside & (sb < w)) ? d * (c1 - 3.0 * c3 * s2_2 + s2_2 * s2_2) : 0.0;
-    out.inside_dr0 = d * ((6.0 * r0sq - 3.0 * d2) * delta1 - delta3);
+    out.inside_dr0 = has_inside ? d * ((6.0 * r0sq - 3.0 * d2) * delta1 - delta3) : 0.0;
     // Subtended angle of [a, b]: ∂θ/∂a = -d/(d²+a²), ∂θ/∂b = d/(d²+b²), ∂θ/∂d = a/(d²+a²) - b/(d²+b²).
     const auto ratio = [](double num, double den) { return den > 0.0 ? num / den : 0.0; };
     const double da1 = d2 + a1 * a1, db1 = d2 + b1 * b1;
@@ -152,24 +155,26 @@ using detail::EdgeTerm;
 using detail::EdgeView;
 using detail::kChunk;
 
+// Returns whether any lane has a pie slice, i.e. whether phase 2 needs its atan2.
 template <bool kGradient, bool kWhollyInside, class Index>
-void TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t base,
+bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t base,
                               size_t lanes, Index index, const EdgeView* views,
                               ChunkState& st) const {
   const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
-#pragma omp simd
+  const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
+  int any_pie = 0;
+#pragma omp simd reduction(| : any_pie)
   for (size_t t = 0; t < lanes; ++t) {
     const size_t i = index(base + t);
     const double nx = nxs[i], ny = nys[i], nz = nzs[i];
-    const double h =
-        (p.x - views[0].vx[i]) * nx + (p.y - views[0].vy[i]) * ny + (p.z - views[0].vz[i]) * nz;
+    const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
     const double r0sq_raw = r2 - h * h;
     const bool in_range = r0sq_raw > 0.0;
     const double r0sq = in_range ? r0sq_raw : 0.0;
     const double r6 = r0sq * r0sq * r0sq;
-    const EdgeTerm e0 = detail::edge_term<kGradient, kWhollyInside>(views[0], i, p, r0sq, r6);
-    const EdgeTerm e1 = detail::edge_term<kGradient, kWhollyInside>(views[1], i, p, r0sq, r6);
-    const EdgeTerm e2 = detail::edge_term<kGradient, kWhollyInside>(views[2], i, p, r0sq, r6);
+    const EdgeTerm e0 = detail::edge_term<kGradient, kWhollyInside>(v0, i, p, r0sq, r6);
+    const EdgeTerm e1 = detail::edge_term<kGradient, kWhollyInside>(v1, i, p, r0sq, r6);
+    const EdgeTerm e2 = detail::edge_term<kGradient, kWhollyInside>(v2, i, p, r0sq, r6);
     st.inside[t] = e0.inside + e1.inside + e2.inside;
     st.inside_dr0[t] = e0.inside_dr0 + e1.inside_dr0 + e2.inside_dr0;
     st.gx[t] = e0.gx + e1.gx + e2.gx;
@@ -182,25 +187,58 @@ void TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
     st.scale[t] = in_range ? ws[i] * inv_norm : 0.0;
     st.touches[t] = e0.touches | e1.touches | e2.touches;
     st.o_inside[t] = !(e0.o_outside | e1.o_outside | e2.o_outside);
+    any_pie |= int(in_range) & int(st.touches[t]) &
+               (int(e0.pie_y != 0.0) | int(e1.pie_y != 0.0) | int(e2.pie_y != 0.0));
   }
+  return any_pie != 0;
 }
 
 template <class Index>
 bool TriangleBatch::wholly_inside(const Vec3& p, double r2, size_t base, size_t lanes,
-                                  Index index) const {
+                                  Index index, const EdgeView* views) const {
+  const EdgeView e0 = views[0], e1 = views[1], e2 = views[2];  // locals: contiguous loads
   int outside = 0;
-  const EdgeArrays* e = edges_;
-#pragma omp simd reduction(+ : outside)
+#pragma omp simd reduction(| : outside)
   for (size_t t = 0; t < lanes; ++t) {
     const size_t i = index(base + t);
-    double far2 = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      const double dx = e[k].vx[i] - p.x, dy = e[k].vy[i] - p.y, dz = e[k].vz[i] - p.z;
-      far2 = std::max(far2, dx * dx + dy * dy + dz * dz);
-    }
-    outside += far2 < r2 ? 0 : 1;
+    const auto dist2 = [&](const EdgeView& e) {
+      const double dx = e.vx[i] - p.x, dy = e.vy[i] - p.y, dz = e.vz[i] - p.z;
+      return dx * dx + dy * dy + dz * dz;
+    };
+    outside |= int(dist2(e0) >= r2) | int(dist2(e1) >= r2) | int(dist2(e2) >= r2);
   }
   return outside == 0;
+}
+
+// The lean path for chunks wholly inside the support sphere: nothing is clipped, so each
+// lane's value is its three inside parts, summed straight into the accumulator.
+template <bool kGradient, class Index>
+void TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm,
+                                             size_t base, size_t lanes, Index index,
+                                             const EdgeView* views, Accumulator& acc) const {
+  const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
+  const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
+  double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
+#pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
+  for (size_t t = 0; t < lanes; ++t) {
+    const size_t i = index(base + t);
+    const double nx = nxs[i], ny = nys[i], nz = nzs[i];
+    const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
+    const double r0sq = r2 - h * h;
+    const EdgeTerm e0 = detail::edge_term<kGradient, true>(v0, i, p, r0sq, 0.0);
+    const EdgeTerm e1 = detail::edge_term<kGradient, true>(v1, i, p, r0sq, 0.0);
+    const EdgeTerm e2 = detail::edge_term<kGradient, true>(v2, i, p, r0sq, 0.0);
+    const double scale = ws[i] * inv_norm;
+    sum += scale * (e0.inside + e1.inside + e2.inside);
+    if constexpr (kGradient) {
+      const double dn = -2.0 * h * (e0.inside_dr0 + e1.inside_dr0 + e2.inside_dr0);
+      sgx += scale * (e0.gx + e1.gx + e2.gx + dn * nx);
+      sgy += scale * (e0.gy + e1.gy + e2.gy + dn * ny);
+      sgz += scale * (e0.gz + e1.gz + e2.gz + dn * nz);
+    }
+  }
+  acc.value += sum;
+  acc.gradient += Vec3(sgx, sgy, sgz);
 }
 
 template <bool kGradient, class Index>
@@ -219,34 +257,40 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
     const size_t lanes = std::min(kChunk, count - base);
     // Phase 1, per lane: height, disk radius, and the three edges' terms. Chunks whose
     // triangles all lie inside the support sphere take the lean path.
-    if (wholly_inside(p, r2, base, lanes, index)) {
-      phase_one<kGradient, true>(p, r2, inv_norm, base, lanes, index, views, st);
-    } else {
-      phase_one<kGradient, false>(p, r2, inv_norm, base, lanes, index, views, st);
+    const bool inside = wholly_inside(p, r2, base, lanes, index, views);
+    if (inside && !acc.per_triangle) {
+      accumulate_wholly_inside<kGradient>(p, r2, inv_norm, base, lanes, index, views, acc);
+      continue;
     }
-    // Phase 2: the pie angles (the only transcendental work), skipped when no lane is clipped.
-    bool any_pie = false;
-    for (size_t t = 0; t < lanes; ++t) {
-      any_pie = any_pie || (st.scale[t] != 0.0 && st.touches[t] &&
-                            (st.pie_y[0][t] != 0.0 || st.pie_y[1][t] != 0.0 || st.pie_y[2][t] != 0.0));
+    const bool any_pie =
+        inside ? phase_one<kGradient, true>(p, r2, inv_norm, base, lanes, index, views, st)
+               : phase_one<kGradient, false>(p, r2, inv_norm, base, lanes, index, views, st);
+    // Phase 2: the pie angles, the only transcendental work, skipped when nothing is clipped.
+    // (A separate loop, so the call is unconditional and libmvec's SIMD atan2 serves it.)
+    double theta[kChunk];
+    if (any_pie) {
+#pragma omp simd
+      for (size_t t = 0; t < lanes; ++t) {
+        theta[t] = atan2(st.pie_y[0][t], st.pie_x[0][t]) + atan2(st.pie_y[1][t], st.pie_x[1][t]) +
+                   atan2(st.pie_y[2][t], st.pie_x[2][t]);
+      }
+    } else {
+      std::fill(theta, theta + lanes, 0.0);
     }
     double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
 #pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
     for (size_t t = 0; t < lanes; ++t) {
-      const double theta = any_pie ? atan2(st.pie_y[0][t], st.pie_x[0][t]) +
-                                         atan2(st.pie_y[1][t], st.pie_x[1][t]) +
-                                         atan2(st.pie_y[2][t], st.pie_x[2][t])
-                                   : 0.0;
       const double r0sq = st.r0sq[t];
       const double r4 = r0sq * r0sq;
       // No edge reaches the disk: it is wholly inside the triangle or wholly outside.
       const double whole = st.o_inside[t] ? 2.0 * kPi : 0.0;
-      const double value = st.touches[t] ? st.inside[t] + r4 * r0sq * theta : r4 * r0sq * whole;
+      const double value =
+          st.touches[t] ? st.inside[t] + r4 * r0sq * theta[t] : r4 * r0sq * whole;
       sum += st.scale[t] * value;
       if (acc.per_triangle) acc.per_triangle[base + t] = st.scale[t] * value;
       if constexpr (kGradient) {
         const double inplane = st.touches[t] ? 1.0 : 0.0;
-        const double dr0 = st.touches[t] ? st.inside_dr0[t] + 3.0 * r4 * theta : 3.0 * r4 * whole;
+        const double dr0 = st.touches[t] ? st.inside_dr0[t] + 3.0 * r4 * theta[t] : 3.0 * r4 * whole;
         const double dn = -2.0 * st.h[t] * dr0;  // r0^2 = R^2 - h^2 moves with P as -2h n
         sgx += st.scale[t] * (inplane * st.gx[t] + dn * st.nx[t]);
         sgy += st.scale[t] * (inplane * st.gy[t] + dn * st.ny[t]);

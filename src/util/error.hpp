@@ -13,8 +13,8 @@ struct SourceLoc {
   // "file", "file:line" or "file:line:col", as compilers print them.
   std::string str() const {
     std::string s = file;
-    if (line > 0) s += ":" + std::to_string(line);
-    if (line > 0 && column > 0) s += ":" + std::to_string(column);
+    if (line > 0) s.append(":").append(std::to_string(line));
+    if (line > 0 && column > 0) s.append(":").append(std::to_string(column));
     return s;
   }
 };

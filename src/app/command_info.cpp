@@ -1,0 +1,76 @@
+#include "app/command_info.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "mesh/load.hpp"
+#include "mesh/stats.hpp"
+#include "util/error.hpp"
+
+namespace convray {
+namespace {
+
+// Six significant digits: enough to compare sizes, short enough to read.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+std::string triple(const Vec3& v) { return number(v.x) + " " + number(v.y) + " " + number(v.z); }
+
+void print_faces(const mesh::LoadReport& report, std::ostream& out) {
+  size_t dropped = report.dropped_zero_area + report.dropped_repeated_vertex;
+  out << "faces read: " << report.faces_read << "\n"
+      << "polygons triangulated: " << report.polygons_triangulated << "\n"
+      << "dropped faces: " << dropped << " (zero-area: " << report.dropped_zero_area
+      << ", repeated-vertex: " << report.dropped_repeated_vertex << ")\n";
+}
+
+void print_topology(const mesh::MeshStats& stats, std::ostream& out) {
+  out << "boundary edges: " << stats.boundary_edges << "\n"
+      << "non-manifold edges: " << stats.non_manifold_edges << "\n"
+      << "inconsistently oriented edges: " << stats.inconsistent_edges << "\n"
+      << "connected components: " << stats.connected_components << "\n";
+}
+
+// The kernel's radius R sets how far each triangle's influence reaches: about an edge length
+// keeps the surface close to the triangles; a sizeable fraction of the model melts it into
+// a blob.
+void print_radius_advice(const mesh::MeshStats& stats, std::ostream& out) {
+  Vec3 size = stats.bounds.extent();
+  double largest = std::max({size.x, size.y, size.z});
+  out << "radius advice: start near the mean edge length, R = " << number(stats.mean_edge_length)
+      << "; the largest dimension is " << number(largest) << ", and R beyond a tenth of it (" << number(largest / 10)
+      << ") blurs the shape\n";
+}
+
+void print_report(const std::string& path, const mesh::LoadedMesh& mesh, const mesh::MeshStats& stats,
+                  std::ostream& out) {
+  out << "file: " << path << "\n"
+      << "format: " << mesh.format << "\n"
+      << "triangles: " << stats.triangles << "\n"
+      << "vertices: " << stats.vertices << " (distinct positions)\n";
+  print_faces(mesh.report, out);
+  out << "bounding box min: " << triple(stats.bounds.lo) << "\n"
+      << "bounding box max: " << triple(stats.bounds.hi) << "\n"
+      << "size: " << triple(stats.bounds.extent()) << "\n"
+      << "mean edge length: " << number(stats.mean_edge_length) << "\n";
+  print_topology(stats, out);
+  print_radius_advice(stats, out);
+}
+
+}  // namespace
+
+int run_info(const std::string& path, std::ostream& out, std::ostream& err) {
+  try {
+    mesh::LoadedMesh mesh = mesh::load_mesh(path);
+    print_report(path, mesh, mesh::compute_stats(mesh.soup), out);
+    return 0;
+  } catch (const InputError& error) {
+    err << error.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace convray

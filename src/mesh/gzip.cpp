@@ -1,0 +1,83 @@
+#include "mesh/gzip.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <climits>
+
+#include "mesh/load_error.hpp"
+
+namespace convray::mesh {
+namespace {
+
+constexpr size_t kChunk = size_t{1} << 16;
+
+// Owns a z_stream set up for gzip decoding, so every exit path releases it.
+class GzipInflater {
+ public:
+  explicit GzipInflater(const std::string& file) {
+    // 16 + MAX_WBITS: expect a gzip header and trailer rather than a raw zlib stream.
+    if (inflateInit2(&stream_, 16 + MAX_WBITS) != Z_OK) fail(file, "gzip: cannot initialise zlib");
+  }
+  ~GzipInflater() { inflateEnd(&stream_); }
+  GzipInflater(const GzipInflater&) = delete;
+  GzipInflater& operator=(const GzipInflater&) = delete;
+
+  z_stream& stream() { return stream_; }
+
+ private:
+  z_stream stream_{};
+};
+
+bool starts_gzip_member(std::string_view bytes) {
+  return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
+         static_cast<unsigned char>(bytes[1]) == 0x8b;
+}
+
+[[noreturn]] void fail_too_big(const std::string& file, uint64_t limit) {
+  fail(file, "gzip: the decompressed data exceeds " + std::to_string(limit) +
+                 " bytes (100 times the compressed size, at least 1 MiB, at most 4 GiB); "
+                 "refusing what looks like a decompression bomb");
+}
+
+}  // namespace
+
+uint64_t inflated_size_limit(uint64_t compressed_size) {
+  uint64_t by_ratio = compressed_size > kMaxInflatedBytes / kMaxInflationRatio
+                          ? kMaxInflatedBytes
+                          : compressed_size * kMaxInflationRatio;
+  return std::min(kMaxInflatedBytes, std::max(kMinInflatedLimit, by_ratio));
+}
+
+std::string gunzip(std::string_view compressed, const std::string& file) {
+  if (!starts_gzip_member(compressed)) fail(file, "gzip: not gzip data (the file does not start with 1f 8b)");
+  const uint64_t limit = inflated_size_limit(compressed.size());
+  GzipInflater inflater(file);
+  z_stream& stream = inflater.stream();
+  std::string output;
+  std::string_view input = compressed;
+  for (;;) {
+    // zlib counts in uInt; feed at most UINT_MAX bytes at a time.
+    size_t feed = std::min<size_t>(input.size(), UINT_MAX);
+    stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(input.data()));
+    stream.avail_in = static_cast<uInt>(feed);
+    size_t old_size = output.size();
+    output.resize(old_size + kChunk);
+    stream.next_out = reinterpret_cast<Bytef*>(output.data() + old_size);
+    stream.avail_out = static_cast<uInt>(kChunk);
+    int status = inflate(&stream, Z_NO_FLUSH);
+    output.resize(old_size + kChunk - stream.avail_out);
+    input.remove_prefix(feed - stream.avail_in);
+    if (output.size() > limit) fail_too_big(file, limit);
+    if (status == Z_STREAM_END) {
+      if (!starts_gzip_member(input)) return output;  // done; trailing bytes ignored
+      inflateReset(&stream);                           // another member follows
+    } else if (status == Z_BUF_ERROR || (status == Z_OK && input.empty() && stream.avail_out != 0)) {
+      fail(file, "gzip: the compressed data ends early (the file is truncated)");
+    } else if (status != Z_OK) {
+      fail(file, std::string("gzip: corrupt data (") + (stream.msg ? stream.msg : "zlib error") + ")");
+    }
+  }
+}
+
+}  // namespace convray::mesh

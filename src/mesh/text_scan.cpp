@@ -1,0 +1,99 @@
+#include "mesh/text_scan.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <cstdlib>
+
+namespace convray::mesh {
+
+bool LineReader::next(std::string_view& line) {
+  if (offset_ >= text_.size()) return false;
+  size_t end = offset_;
+  while (end < text_.size() && !is_line_end(text_[end])) ++end;
+  line = text_.substr(offset_, end - offset_);
+  if (end < text_.size() && text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n')
+    ++end;
+  offset_ = end + 1;
+  ++line_number_;
+  return true;
+}
+
+bool TokenReader::next(std::string_view& token) {
+  while (offset_ < line_.size() && is_blank(line_[offset_])) ++offset_;
+  if (offset_ >= line_.size()) return false;
+  size_t end = offset_;
+  while (end < line_.size() && !is_blank(line_[end])) ++end;
+  token = line_.substr(offset_, end - offset_);
+  offset_ = end;
+  return true;
+}
+
+std::string_view TokenReader::rest() {
+  while (offset_ < line_.size() && is_blank(line_[offset_])) ++offset_;
+  return line_.substr(offset_);
+}
+
+std::string_view trim_blanks(std::string_view line) {
+  size_t begin = 0;
+  while (begin < line.size() && is_blank(line[begin])) ++begin;
+  size_t end = line.size();
+  while (end > begin && is_blank(line[end - 1])) --end;
+  return line.substr(begin, end - begin);
+}
+
+bool parse_real(std::string_view token, double& value) {
+  // from_chars rejects a leading '+', which every writer of these formats may emit.
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty()) return false;
+  const char* end = token.data() + token.size();
+  auto [ptr, ec] = std::from_chars(token.data(), end, value, std::chars_format::general);
+  // Literals beyond double's range ("1e999", "1e-999") are numbers all the same: strtod
+  // rounds them to infinity or zero, and the caller's finiteness check reports the former.
+  if (ec == std::errc::result_out_of_range && ptr == end) {
+    value = std::strtod(std::string(token).c_str(), nullptr);
+    return true;
+  }
+  return ec == std::errc() && ptr == end;
+}
+
+bool parse_integer(std::string_view token, int64_t& value) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty() || token.front() == '+') return false;
+  const char* end = token.data() + token.size();
+  auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+bool parse_digits(std::string_view token, uint64_t& value) {
+  if (token.empty() || token.front() < '0' || token.front() > '9') return false;
+  const char* end = token.data() + token.size();
+  auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+std::string quote_token(std::string_view token) {
+  constexpr size_t kMaxShown = 40;
+  std::string shown = "'";
+  for (size_t i = 0; i < token.size() && i < kMaxShown; ++i) {
+    unsigned char c = static_cast<unsigned char>(token[i]);
+    if (c < 0x20 || c == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+      shown += escaped;
+    } else {
+      shown += static_cast<char>(c);
+    }
+  }
+  if (token.size() > kMaxShown) shown += "...";
+  return shown + "'";
+}
+
+size_t find_binary_byte(std::string_view text) {
+  for (size_t i = 0; i < text.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') return i;
+  }
+  return std::string_view::npos;
+}
+
+}  // namespace convray::mesh

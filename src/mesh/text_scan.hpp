@@ -1,0 +1,66 @@
+#pragma once
+// Small, strict text-scanning helpers shared by the OBJ, OFF and ASCII PLY checks.
+// Numbers are parsed with std::from_chars: exact (correctly rounded) and locale-free.
+// Internal to src/mesh.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace convray::mesh {
+
+inline bool is_blank(char c) { return c == ' ' || c == '\t'; }
+inline bool is_line_end(char c) { return c == '\n' || c == '\r'; }
+
+// Walks text line by line. "\n", "\r\n" and a lone "\r" each end a line (as tinyobjloader
+// splits them); the last line needs no terminator.
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : text_(text) {}
+
+  // The next line without its terminator; false at the end of the text.
+  bool next(std::string_view& line);
+  int line_number() const { return line_number_; }  // 1-based number of the last line read
+  size_t offset() const { return offset_; }         // where the next line starts
+
+ private:
+  std::string_view text_;
+  size_t offset_ = 0;
+  int line_number_ = 0;
+};
+
+// Walks the blank-separated tokens of one line.
+class TokenReader {
+ public:
+  explicit TokenReader(std::string_view line) : line_(line) {}
+
+  bool next(std::string_view& token);
+  // Everything after the tokens read so far, without leading blanks.
+  std::string_view rest();
+
+ private:
+  std::string_view line_;
+  size_t offset_ = 0;
+};
+
+// `line` without blanks at either end.
+std::string_view trim_blanks(std::string_view line);
+
+// A real number: from_chars syntax plus an optional leading '+'; "nan" and "inf" parse (the
+// caller decides whether they are allowed). The whole token must be the number.
+bool parse_real(std::string_view token, double& value);
+
+// A decimal integer with an optional sign; the whole token must be the number.
+bool parse_integer(std::string_view token, int64_t& value);
+
+// Only digits (no sign), as assimp's strtoul10 reads counts and indices.
+bool parse_digits(std::string_view token, uint64_t& value);
+
+// The token as it may appear in a message: at most 40 characters, control bytes escaped.
+std::string quote_token(std::string_view token);
+
+// Offset of the first byte that has no place in a text file (NUL and control bytes other
+// than tab, line feed and carriage return), or std::string_view::npos.
+size_t find_binary_byte(std::string_view text);
+
+}  // namespace convray::mesh
