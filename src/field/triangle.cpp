@@ -58,14 +58,16 @@ S fan_integral(const S& d, const S& s_begin, const S& s_end, const S& r0sq, bool
   const double end = value_of(s_end);
   S total(0.0);
   S pie_angle(0.0);
-  const S lo = begin > -w ? s_begin : S(-w);
-  const S hi = end < w ? s_end : S(w);
+  // A corner exactly on the circle is a moving bound, not a fixed clip point: both sides'
+  // derivatives agree there, so it must carry its gradient (hence >= and <=).
+  const S lo = begin >= -w ? s_begin : S(-w);
+  const S hi = end <= w ? s_end : S(w);
   if (value_of(lo) < value_of(hi)) {
     touches_disk = true;
     total += fan_inside_part(d, lo, hi, r0sq);
   }
-  if (begin < -w) pie_angle += subtended_angle(d, s_begin, end < -w ? s_end : S(-w));
-  if (end > w) pie_angle += subtended_angle(d, begin > w ? s_begin : S(w), s_end);
+  if (begin < -w) pie_angle += subtended_angle(d, s_begin, end <= -w ? s_end : S(-w));
+  if (end > w) pie_angle += subtended_angle(d, begin >= w ? s_begin : S(w), s_end);
   return total + r0sq * r0sq * r0sq * pie_angle;
 }
 

@@ -128,8 +128,9 @@ template <bool kGradient, bool kWhollyInside>
                                          (4.0 / 3.0) * d * delta3)
                            : 0.0;
     double ds = 0.0;
-    ds -= (has_inside & (sa > -w)) ? d * (c1 - 3.0 * c3 * s1_2 + s1_2 * s1_2) : 0.0;
-    ds += (has_inside & (sb < w)) ? d * (c1 - 3.0 * c3 * s2_2 + s2_2 * s2_2) : 0.0;
+    // A corner exactly on the circle still moves with P (see triangle.cpp): >= and <=.
+    ds -= (has_inside & (sa >= -w)) ? d * (c1 - 3.0 * c3 * s1_2 + s1_2 * s1_2) : 0.0;
+    ds += (has_inside & (sb <= w)) ? d * (c1 - 3.0 * c3 * s2_2 + s2_2 * s2_2) : 0.0;
     out.inside_dr0 = has_inside ? d * ((6.0 * r0sq - 3.0 * d2) * delta1 - delta3) : 0.0;
     // Subtended angle of [a, b]: ∂θ/∂a = -d/(d²+a²), ∂θ/∂b = d/(d²+b²), ∂θ/∂d = a/(d²+a²) - b/(d²+b²).
     const auto ratio = [](double num, double den) { return den > 0.0 ? num / den : 0.0; };
@@ -137,8 +138,10 @@ template <bool kGradient, bool kWhollyInside>
     const double da2 = d2 + a2 * a2, db2 = d2 + b2 * b2;
     const double pie_dd = ratio(a1, da1) - ratio(b1, db1) + ratio(a2, da2) - ratio(b2, db2);
     double pie_ds = 0.0;
-    pie_ds -= std::abs(sa) > w ? ratio(d, d2 + sa * sa) : 0.0;
-    pie_ds += std::abs(sb) > w ? ratio(d, d2 + sb * sb) : 0.0;
+    // The corner starts pie 1 when left of -w, pie 2 when at or right of +w; it ends pie 2
+    // when right of +w, pie 1 when at or left of -w.
+    pie_ds -= ((sa < -w) | (sa >= w)) ? ratio(d, d2 + sa * sa) : 0.0;
+    pie_ds += ((sb > w) | (sb <= -w)) ? ratio(d, d2 + sb * sb) : 0.0;
     dd += r6 * pie_dd;
     ds += r6 * pie_ds;
     out.gx = -(dd * e.mx[i] + ds * e.ux[i]);

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Regenerates every picture in README.md and docs/ with convray itself.
+# Usage: bash scripts/make-docs-images.sh   (after a build: bash scripts/setup.sh demo)
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+convray=./build/convray
+mesh=scenes/models/soup.obj
+out=docs/images
+
+# The example soup's field through z = 0: the surface F = T (white) closes the soup's hole
+# once the offset is large enough; the triangles' cross-section is black.
+$convray slice "$mesh" --radius 0.25 --offset 0.1 --axis z --at 0 --size 800x600 -o $out/slice-soup-z.png
+$convray slice "$mesh" --radius 0.25 --offset 0.1 --axis x --at 0 --size 800x600 -o $out/slice-soup-x.png
+# Radius: a small R hugs the triangles, a large R blobs them together.
+for r in 0.08 0.25 0.5; do
+  $convray slice "$mesh" --radius $r --offset "$(awk -v r=$r 'BEGIN { print r / 2 }')" --axis z --at 0 \
+    --size 400x300 -o $out/slice-soup-r$r.png
+done
+echo "pictures written to $out/"
