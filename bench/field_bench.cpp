@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "field/segment.hpp"
+#include "field/segment_batch.hpp"
 #include "field/triangle.hpp"
 #include "field/triangle_batch.hpp"
 
@@ -82,11 +83,22 @@ void batch_field(benchmark::State& state, bool clipped) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(tris.size()));
 }
 
-void segment_value(benchmark::State& state) {
+std::vector<convray::field::Segment> make_segments() {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::vector<convray::field::Segment> segs(kTriangles);
   for (auto& s : segs) s = {{unit(rng), unit(rng), unit(rng)}, {unit(rng), unit(rng), unit(rng)}};
+  return segs;
+}
+
+void segment_batch_value(benchmark::State& state) {
+  const convray::field::SegmentBatch batch(make_segments());
+  for (auto _ : state) benchmark::DoNotOptimize(batch.value(Vec3(0.0), 1.0));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(batch.size()));
+}
+
+void segment_value(benchmark::State& state) {
+  const auto segs = make_segments();
   for (auto _ : state) {
     double sum = 0.0;
     for (const auto& s : segs) sum += convray::field::segment_value(Vec3(0.0), s, 1.0);
@@ -106,5 +118,6 @@ BENCHMARK_CAPTURE(scalar_field, clipped, true);
 BENCHMARK_CAPTURE(batch_field, wholly_inside, false);
 BENCHMARK_CAPTURE(batch_field, clipped, true);
 BENCHMARK(segment_value);
+BENCHMARK(segment_batch_value);
 
 BENCHMARK_MAIN();
