@@ -1,5 +1,8 @@
 #include "implicit/mesh_field.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace convray::implicit {
 
 namespace {
@@ -22,14 +25,44 @@ MeshField::MeshField(std::vector<field::Triangle> triangles, double radius, doub
       batch_(triangles_),
       grid_(support_boxes(triangles_, radius), radius),
       radius_(radius),
-      strength_(strength) {}
+      strength_(strength) {
+  for (const field::Triangle& t : triangles_) {
+    // Centre of the bounding box: not the smallest sphere, but a tight enough bound.
+    const Vec3 c = 0.5 * (glm::min(glm::min(t.a, t.b), t.c) + glm::max(glm::max(t.a, t.b), t.c));
+    const double bound = std::sqrt(std::max({glm::dot(t.a - c, t.a - c), glm::dot(t.b - c, t.b - c),
+                                             glm::dot(t.c - c, t.c - c)}));
+    const double reach = bound + radius;
+    sphere_x_.push_back(c.x), sphere_y_.push_back(c.y), sphere_z_.push_back(c.z);
+    sphere_reach2_.push_back(reach * reach * (1.0 + 1e-12));  // never cull by a rounding
+  }
+}
+
+void MeshField::contributors(const Vec3& p, std::vector<uint32_t>& out) const {
+  out.clear();
+  for (const uint32_t i : grid_.candidates(p)) {
+    const double dx = p.x - sphere_x_[i], dy = p.y - sphere_y_[i], dz = p.z - sphere_z_[i];
+    if (dx * dx + dy * dy + dz * dz <= sphere_reach2_[i]) out.push_back(i);
+  }
+}
+
+namespace {
+// One scratch list per thread: evaluation is called from TBB workers, millions of times.
+std::vector<uint32_t>& scratch() {
+  thread_local std::vector<uint32_t> list;
+  return list;
+}
+}  // namespace
 
 double MeshField::value(const Vec3& p) const {
-  return strength_ * batch_.value(p, radius_, grid_.candidates(p));
+  std::vector<uint32_t>& list = scratch();
+  contributors(p, list);
+  return strength_ * batch_.value(p, radius_, list);
 }
 
 field::FieldSample MeshField::field(const Vec3& p) const {
-  return batch_.field(p, radius_, grid_.candidates(p)) * strength_;
+  std::vector<uint32_t>& list = scratch();
+  contributors(p, list);
+  return batch_.field(p, radius_, list) * strength_;
 }
 
 field::FieldSample MeshField::field_exact(const Vec3& p) const {

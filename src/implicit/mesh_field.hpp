@@ -28,10 +28,15 @@ class MeshField {
 
   const SupportGrid& grid() const { return grid_; }
 
+  // The triangles whose support can contain p: the grid cell's list, culled by each
+  // triangle's bounding sphere grown by R (cheap, and far tighter than the cell).
+  void contributors(const Vec3& p, std::vector<uint32_t>& out) const;
+
  private:
   std::vector<field::Triangle> triangles_;
   field::TriangleBatch batch_;
   SupportGrid grid_;
+  std::vector<double> sphere_x_, sphere_y_, sphere_z_, sphere_reach2_;  // (r_bound + R)^2
   double radius_;
   double strength_;
 };
