@@ -133,7 +133,12 @@ template <bool kGradient, bool kWhollyInside>
     ds += (has_inside & (sb <= w)) ? d * (c1 - 3.0 * c3 * s2_2 + s2_2 * s2_2) : 0.0;
     out.inside_dr0 = has_inside ? d * ((6.0 * r0sq - 3.0 * d2) * delta1 - delta3) : 0.0;
     // Subtended angle of [a, b]: ∂θ/∂a = -d/(d²+a²), ∂θ/∂b = d/(d²+b²), ∂θ/∂d = a/(d²+a²) - b/(d²+b²).
-    const auto ratio = [](double num, double den) { return den > 0.0 ? num / den : 0.0; };
+    // Divide unconditionally by a safe denominator: a conditional division would keep the
+    // loop scalar (it might trap), and the vectorizer is the point of this file.
+    const auto ratio = [](double num, double den) {
+      const bool ok = den > 0.0;
+      return (ok ? num : 0.0) / (ok ? den : 1.0);
+    };
     const double da1 = d2 + a1 * a1, db1 = d2 + b1 * b1;
     const double da2 = d2 + a2 * a2, db2 = d2 + b2 * b2;
     const double pie_dd = ratio(a1, da1) - ratio(b1, db1) + ratio(a2, da2) - ratio(b2, db2);
