@@ -71,6 +71,7 @@ struct EdgeView {
 struct EdgeTerm {
   double inside = 0.0, inside_dr0 = 0.0, pie_y = 0.0, pie_x = 0.0;
   double gx = 0.0, gy = 0.0, gz = 0.0;
+  double corner_dist2 = 0.0;  // |V - P|^2 of the edge's start corner
   bool touches = false, o_outside = false;
 };
 
@@ -81,6 +82,7 @@ template <bool kGradient, bool kWhollyInside>
                                                  double r0sq, double r6) {
   EdgeTerm out;
   const double rx = e.vx[i] - p.x, ry = e.vy[i] - p.y, rz = e.vz[i] - p.z;
+  out.corner_dist2 = rx * rx + ry * ry + rz * rz;
   const double d = rx * e.mx[i] + ry * e.my[i] + rz * e.mz[i];
   const double sa = rx * e.ux[i] + ry * e.uy[i] + rz * e.uz[i];
   const double sb = sa + e.length[i];
@@ -164,7 +166,7 @@ using detail::EdgeView;
 using detail::kChunk;
 
 // Returns whether any lane has a pie slice, i.e. whether phase 2 needs its atan2.
-template <bool kGradient, bool kWhollyInside, class Index>
+template <bool kGradient, class Index>
 bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t base,
                               size_t lanes, Index index, const EdgeView* views,
                               ChunkState& st) const {
@@ -180,9 +182,9 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
     const bool in_range = r0sq_raw > 0.0;
     const double r0sq = in_range ? r0sq_raw : 0.0;
     const double r6 = r0sq * r0sq * r0sq;
-    const EdgeTerm e0 = detail::edge_term<kGradient, kWhollyInside>(v0, i, p, r0sq, r6);
-    const EdgeTerm e1 = detail::edge_term<kGradient, kWhollyInside>(v1, i, p, r0sq, r6);
-    const EdgeTerm e2 = detail::edge_term<kGradient, kWhollyInside>(v2, i, p, r0sq, r6);
+    const EdgeTerm e0 = detail::edge_term<kGradient, false>(v0, i, p, r0sq, r6);
+    const EdgeTerm e1 = detail::edge_term<kGradient, false>(v1, i, p, r0sq, r6);
+    const EdgeTerm e2 = detail::edge_term<kGradient, false>(v2, i, p, r0sq, r6);
     st.inside[t] = e0.inside + e1.inside + e2.inside;
     st.inside_dr0[t] = e0.inside_dr0 + e1.inside_dr0 + e2.inside_dr0;
     st.gx[t] = e0.gx + e1.gx + e2.gx;
@@ -201,33 +203,19 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
   return any_pie != 0;
 }
 
-template <class Index>
-bool TriangleBatch::wholly_inside(const Vec3& p, double r2, size_t base, size_t lanes,
-                                  Index index, const EdgeView* views) const {
-  const EdgeView e0 = views[0], e1 = views[1], e2 = views[2];  // locals: contiguous loads
-  int outside = 0;
-#pragma omp simd reduction(| : outside)
-  for (size_t t = 0; t < lanes; ++t) {
-    const size_t i = index(base + t);
-    const auto dist2 = [&](const EdgeView& e) {
-      const double dx = e.vx[i] - p.x, dy = e.vy[i] - p.y, dz = e.vz[i] - p.z;
-      return dx * dx + dy * dy + dz * dz;
-    };
-    outside |= int(dist2(e0) >= r2) | int(dist2(e1) >= r2) | int(dist2(e2) >= r2);
-  }
-  return outside == 0;
-}
-
-// The lean path for chunks wholly inside the support sphere: nothing is clipped, so each
-// lane's value is its three inside parts, summed straight into the accumulator.
+// The lean path, tried optimistically: assuming every triangle of the chunk lies inside the
+// support sphere, nothing is clipped and each lane's value is its three inside parts. The
+// same pass checks the assumption (every corner within R); if it fails, nothing is added
+// and the caller takes the general path for this chunk.
 template <bool kGradient, class Index>
-void TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm,
+bool TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm,
                                              size_t base, size_t lanes, Index index,
                                              const EdgeView* views, Accumulator& acc) const {
   const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
   double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
-#pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
+  int outside = 0;
+#pragma omp simd reduction(+ : sum, sgx, sgy, sgz) reduction(| : outside)
   for (size_t t = 0; t < lanes; ++t) {
     const size_t i = index(base + t);
     const double nx = nxs[i], ny = nys[i], nz = nzs[i];
@@ -236,6 +224,8 @@ void TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double in
     const EdgeTerm e0 = detail::edge_term<kGradient, true>(v0, i, p, r0sq, 0.0);
     const EdgeTerm e1 = detail::edge_term<kGradient, true>(v1, i, p, r0sq, 0.0);
     const EdgeTerm e2 = detail::edge_term<kGradient, true>(v2, i, p, r0sq, 0.0);
+    outside |= int(e0.corner_dist2 >= r2) | int(e1.corner_dist2 >= r2) |
+               int(e2.corner_dist2 >= r2);
     const double scale = ws[i] * inv_norm;
     sum += scale * (e0.inside + e1.inside + e2.inside);
     if constexpr (kGradient) {
@@ -245,8 +235,10 @@ void TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double in
       sgz += scale * (e0.gz + e1.gz + e2.gz + dn * nz);
     }
   }
+  if (outside) return false;
   acc.value += sum;
   acc.gradient += Vec3(sgx, sgy, sgz);
+  return true;
 }
 
 template <bool kGradient, class Index>
@@ -261,18 +253,20 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
                 e.uz.data(), e.mx.data(), e.my.data(), e.mz.data(), e.length.data()};
   }
   ChunkState st;
+  bool try_lean = true;
   for (size_t base = 0; base < count; base += kChunk) {
     const size_t lanes = std::min(kChunk, count - base);
     // Phase 1, per lane: height, disk radius, and the three edges' terms. Chunks whose
     // triangles all lie inside the support sphere take the lean path.
-    const bool inside = wholly_inside(p, r2, base, lanes, index, views);
-    if (inside && !acc.per_triangle) {
-      accumulate_wholly_inside<kGradient>(p, r2, inv_norm, base, lanes, index, views, acc);
+    // Try the lean path while chunks keep being wholly inside (large radii); once one is not,
+    // go straight to the general path until a chunk without pie slices suggests trying again.
+    if (try_lean && !acc.per_triangle &&
+        accumulate_wholly_inside<kGradient>(p, r2, inv_norm, base, lanes, index, views, acc)) {
       continue;
     }
     const bool any_pie =
-        inside ? phase_one<kGradient, true>(p, r2, inv_norm, base, lanes, index, views, st)
-               : phase_one<kGradient, false>(p, r2, inv_norm, base, lanes, index, views, st);
+        phase_one<kGradient>(p, r2, inv_norm, base, lanes, index, views, st);
+    try_lean = !any_pie;
     // Phase 2: the pie angles, the only transcendental work, skipped when nothing is clipped.
     // (A separate loop, so the call is unconditional and libmvec's SIMD atan2 serves it.)
     double theta[kChunk];

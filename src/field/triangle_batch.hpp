@@ -46,14 +46,11 @@ class TriangleBatch {
   template <bool kGradient, class Index>
   void evaluate(const Vec3& p, double radius, size_t count, Index index,
                 Accumulator& acc) const;
-  template <class Index>
-  bool wholly_inside(const Vec3& p, double r2, size_t base, size_t lanes, Index index,
-                     const detail::EdgeView* views) const;
   template <bool kGradient, class Index>
-  void accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm, size_t base,
+  bool accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm, size_t base,
                                 size_t lanes, Index index, const detail::EdgeView* views,
                                 Accumulator& acc) const;
-  template <bool kGradient, bool kWhollyInside, class Index>
+  template <bool kGradient, class Index>
   bool phase_one(const Vec3& p, double r2, double inv_norm, size_t base, size_t lanes,
                  Index index, const detail::EdgeView* views, detail::ChunkState& st) const;
 
