@@ -35,14 +35,16 @@ void print_topology(const mesh::MeshStats& stats, std::ostream& out) {
 }
 
 // The kernel's radius R sets how far each triangle's influence reaches: about an edge length
-// keeps the surface close to the triangles; a sizeable fraction of the model melts it into
-// a blob.
+// keeps the surface close to the triangles, while a sizeable fraction of the model melts it
+// into a blob. So the advice is the smaller of the mean edge length and a tenth of the
+// model's largest dimension.
 void print_radius_advice(const mesh::MeshStats& stats, std::ostream& out) {
   Vec3 size = stats.bounds.extent();
   double largest = std::max({size.x, size.y, size.z});
-  out << "radius advice: start near the mean edge length, R = " << number(stats.mean_edge_length)
-      << "; the largest dimension is " << number(largest) << ", and R beyond a tenth of it (" << number(largest / 10)
-      << ") blurs the shape\n";
+  double start = std::min(stats.mean_edge_length, largest / 10);
+  out << "radius advice: start with R = " << number(start) << " (the smaller of the mean edge length, "
+      << number(stats.mean_edge_length) << ", and a tenth of the largest dimension, " << number(largest)
+      << "); larger radii blur the shape\n";
 }
 
 void print_report(const std::string& path, const mesh::LoadedMesh& mesh, const mesh::MeshStats& stats,

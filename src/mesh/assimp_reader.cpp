@@ -58,13 +58,21 @@ class SingleFormatImporter {
   Assimp::Importer importer_;
 };
 
+// assimp's messages can quote the rest of the file; one line of at most 200 bytes is enough.
+std::string shortened(std::string message) {
+  constexpr size_t kMaxLength = 200;
+  message = message.substr(0, message.find_first_of("\r\n"));
+  if (message.size() > kMaxLength) message = message.substr(0, kMaxLength) + "...";
+  return message;
+}
+
 const aiScene* import(SingleFormatImporter& importer, std::string_view bytes, MeshFormat format,
                       const std::string& file) {
   // No aiProcess_Triangulate: build_soup() triangulates every format the same way and counts
   // what it did. No JoinIdenticalVertices or anything else that changes the triangles.
   const aiScene* scene = importer.get().ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_ValidateDataStructure,
                                                            extension_of(format));
-  if (!scene) fail(file, std::string(format_label(format)) + " reader: " + importer.get().GetErrorString());
+  if (!scene) fail(file, std::string(format_label(format)) + " reader: " + shortened(importer.get().GetErrorString()));
   return scene;
 }
 
@@ -150,11 +158,10 @@ PolygonMesh read_stl(std::string_view bytes, const std::string& file) {
   StlContents contents = check_stl(bytes, file);
   PolygonMesh empty;
   empty.format = contents.encoding == StlEncoding::Ascii ? "STL ascii" : "STL binary";
-  if (contents.encoding == StlEncoding::Binary && contents.triangle_count == 0) return empty;
+  if (contents.triangle_count == 0) return empty;  // build_soup reports "no triangles"
   SingleFormatImporter importer(MeshFormat::Stl, file);
-  PolygonMesh read = collect_polygons(*import(importer, bytes, MeshFormat::Stl, file));
-  if (contents.encoding == StlEncoding::Binary && read.face_count() != contents.triangle_count)
-    fail_disagreement(file, MeshFormat::Stl, "the number of triangles");
+  PolygonMesh read = collect_polygons(*import(importer, bytes.substr(contents.text_start), MeshFormat::Stl, file));
+  if (read.face_count() != contents.triangle_count) fail_disagreement(file, MeshFormat::Stl, "the number of triangles");
   read.format = empty.format;
   read.vertex_per_corner = true;
   return read;

@@ -1,5 +1,9 @@
 // OBJ through tinyobjloader.
 //
+// tinyobjloader sees only the `v` and `f` lines, which scan_obj() has checked before: the
+// rest of its parser (materials, tags, skin weights, ...) is code convray does not need and
+// that fuzzing found undefined behaviour in (an out-of-range float-to-int conversion in `vw`).
+//
 // Debian's libtinyobjloader.so is built with float coordinates, and a library we link is not
 // instrumented when fuzzing. So this file compiles tinyobjloader's (header-only) implementation
 // itself, in double precision, inside a namespace of its own so that its symbols cannot clash
@@ -19,6 +23,7 @@
 #include "mesh/load_error.hpp"
 #include "mesh/obj_check.hpp"
 #include "mesh/readers.hpp"
+#include "mesh/text_scan.hpp"
 
 namespace convray::mesh {
 namespace {
@@ -53,6 +58,22 @@ TinyObjResult run_tinyobj(std::string_view text, const std::string& file) {
   return result;
 }
 
+// The `v` and `f` lines of the text, nothing else.
+std::string vertex_and_face_lines(std::string_view text) {
+  std::string kept;
+  LineReader lines(text);
+  std::string_view line;
+  while (lines.next(line)) {
+    TokenReader tokens(line);
+    std::string_view keyword;
+    if (tokens.next(keyword) && (keyword == "v" || keyword == "f")) {
+      kept.append(line);
+      kept += '\n';
+    }
+  }
+  return kept;
+}
+
 [[noreturn]] void fail_disagreement(const std::string& file, const std::string& what) {
   fail(file, "OBJ reader and convray's own check of the file disagree about " + what +
                  "; the file uses OBJ syntax convray does not understand");
@@ -82,7 +103,7 @@ void compare_faces(const TinyObjResult& read, const PolygonMesh& scanned, const 
 
 PolygonMesh read_obj(std::string_view text, const std::string& file) {
   PolygonMesh scanned = scan_obj(text, file);
-  TinyObjResult read = run_tinyobj(text, file);
+  TinyObjResult read = run_tinyobj(vertex_and_face_lines(text), file);
   if (read.attributes.vertices.size() != 3 * scanned.vertices.size())
     fail_disagreement(file, "the number of vertices");
   compare_faces(read, scanned, file);

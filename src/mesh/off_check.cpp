@@ -88,7 +88,7 @@ class OffWalk {
     layout.colour = take("C");
     layout.normal = take("N");
     layout.homogeneous = take("4");
-    if (rest == "nOFF" || rest.substr(0, 1) == "n")
+    if (!rest.empty() && rest.front() == 'n')
       fail(file_, "OFF files of other dimensions than 3 (nOFF) are not supported", line);
     if (rest != "OFF")
       fail(file_, "not an OFF file: it does not start with the keyword OFF (or COFF, NOFF, STOFF, 4OFF, ...)", line);

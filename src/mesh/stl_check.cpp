@@ -1,5 +1,7 @@
 #include "mesh/stl_check.hpp"
 
+#include <array>
+
 #include "mesh/load_error.hpp"
 #include "mesh/text_scan.hpp"
 
@@ -8,36 +10,149 @@ namespace {
 
 constexpr uint64_t kBinaryHeaderSize = 84;  // 80 bytes of anything, then a uint32 count
 constexpr uint64_t kBinaryTriangleSize = 50;
+constexpr size_t kMaxSolidNameLength = 1000;  // assimp refuses names of 1024 bytes or more
 
 uint32_t binary_triangle_count(std::string_view bytes) {
   const auto* count = reinterpret_cast<const unsigned char*>(bytes.data() + 80);
   return uint32_t{count[0]} | uint32_t{count[1]} << 8 | uint32_t{count[2]} << 16 | uint32_t{count[3]} << 24;
 }
 
-bool starts_with_solid(std::string_view bytes) {
-  size_t start = 0;
-  while (start < bytes.size() && (is_blank(bytes[start]) || is_line_end(bytes[start]))) ++start;
-  return bytes.substr(start, 5) == "solid";
+size_t skip_white(std::string_view bytes, size_t at) {
+  while (at < bytes.size() && (is_blank(bytes[at]) || is_line_end(bytes[at]))) ++at;
+  return at;
 }
 
-// The last token of the file must be `endsolid` or follow it on the last line
-// (`endsolid name`).
-bool ends_with_endsolid(std::string_view bytes) {
-  size_t end = bytes.size();
-  while (end > 0 && (is_blank(bytes[end - 1]) || is_line_end(bytes[end - 1]))) --end;
-  size_t line_start = bytes.find_last_of("\r\n", end == 0 ? 0 : end - 1);
-  line_start = line_start == std::string_view::npos ? 0 : line_start + 1;
-  std::string_view last_line = trim_blanks(bytes.substr(line_start, end - line_start));
-  return last_line.substr(0, 8) == "endsolid";
+// Whitespace-separated tokens across lines, with the line each is on.
+class Tokens {
+ public:
+  explicit Tokens(std::string_view text) : text_(text) {}
+
+  bool next(std::string_view& token) {
+    while (offset_ < text_.size() && (is_blank(text_[offset_]) || is_line_end(text_[offset_]))) step();
+    if (offset_ >= text_.size()) return false;
+    size_t end = offset_;
+    while (end < text_.size() && !is_blank(text_[end]) && !is_line_end(text_[end])) ++end;
+    token = text_.substr(offset_, end - offset_);
+    offset_ = end;
+    return true;
+  }
+  // The next token if it is on the current line (assimp reads the numbers after `normal` and
+  // `vertex` skipping blanks only).
+  bool next_on_line(std::string_view& token) {
+    while (offset_ < text_.size() && is_blank(text_[offset_])) ++offset_;
+    if (offset_ >= text_.size() || is_line_end(text_[offset_])) return false;
+    return next(token);
+  }
+  // The rest of the current line, as tokens the caller looks at one by one.
+  std::string_view rest_of_line() {
+    size_t end = offset_;
+    while (end < text_.size() && !is_line_end(text_[end])) ++end;
+    std::string_view rest = text_.substr(offset_, end - offset_);
+    offset_ = end;
+    return rest;
+  }
+  int line() const { return line_; }
+
+ private:
+  void step() {
+    char c = text_[offset_++];
+    if (c == '\n' || (c == '\r' && (offset_ >= text_.size() || text_[offset_] != '\n'))) ++line_;
+  }
+
+  std::string_view text_;
+  size_t offset_ = 0;
+  int line_ = 1;
+};
+
+bool is_keyword(std::string_view token) {
+  for (std::string_view keyword : {"facet", "normal", "outer", "loop", "vertex", "endloop", "endfacet", "solid"}) {
+    if (token == keyword) return true;
+  }
+  return token.substr(0, 8) == "endsolid";
 }
 
-void check_ascii(std::string_view bytes, const std::string& file) {
-  size_t at = find_binary_byte(bytes);
-  if (at != std::string_view::npos)
-    fail(file, "the ASCII STL contains a control byte at offset " + std::to_string(at));
-  if (!ends_with_endsolid(bytes))
-    fail(file, "the ASCII STL does not end with an 'endsolid' line (the file is truncated)");
-}
+class AsciiStlWalk {
+ public:
+  AsciiStlWalk(std::string_view text, const std::string& file) : tokens_(text), file_(file) {}
+
+  uint64_t walk() {
+    std::string_view token;
+    while (tokens_.next(token)) {
+      if (token != "solid") fail_here("expected 'solid' but found " + quote_token(token));
+      read_solid_name();
+      while (read_facet_or_end()) ++facets_;
+    }
+    return facets_;
+  }
+
+ private:
+  [[noreturn]] void fail_here(const std::string& what) { fail(file_, "ASCII STL: " + what, tokens_.line()); }
+
+  // `solid` may be followed by a name (assimp keeps the first word) and any other words,
+  // as long as none of them is a keyword that assimp's reader would act on.
+  void read_solid_name() {
+    TokenReader words(tokens_.rest_of_line());
+    std::string_view word;
+    for (bool first = true; words.next(word); first = false) {
+      if (first && word.size() > kMaxSolidNameLength) fail_here("the solid's name is longer than 1000 characters");
+      if (is_keyword(word)) fail_here("the solid's name contains the keyword " + quote_token(word));
+    }
+  }
+
+  // One facet; false at `endsolid`.
+  bool read_facet_or_end() {
+    std::string_view token = next_or_truncated();
+    if (token.substr(0, 8) == "endsolid") {
+      if (token != "endsolid") fail_here("expected 'endsolid' but found " + quote_token(token));
+      tokens_.rest_of_line();  // the solid's name again, ignored
+      return false;
+    }
+    if (token != "facet") fail_here("expected 'facet' or 'endsolid' but found " + quote_token(token) + in_face(facets_));
+    expect_on_line("normal");
+    read_numbers();
+    expect("outer");
+    expect("loop");
+    for (int corner = 0; corner < 3; ++corner) {
+      expect("vertex");
+      read_numbers();
+    }
+    expect("endloop");
+    expect("endfacet");
+    return true;
+  }
+
+  void expect(std::string_view keyword) {
+    std::string_view token = next_or_truncated();
+    if (token != keyword)
+      fail_here("expected '" + std::string(keyword) + "' but found " + quote_token(token) + in_face(facets_));
+  }
+
+  void expect_on_line(std::string_view keyword) {
+    std::string_view token;
+    if (!tokens_.next_on_line(token) || token != keyword)
+      fail_here("expected '" + std::string(keyword) + "' on the same line" + in_face(facets_));
+  }
+
+  // Three numbers on the line of the keyword before them.
+  void read_numbers() {
+    for (int axis = 0; axis < 3; ++axis) {
+      std::string_view token;
+      double value = 0.0;
+      if (!tokens_.next_on_line(token)) fail_here("expected three numbers on the line" + in_face(facets_));
+      if (!parse_real(token, value)) fail_here("expected a number but found " + quote_token(token) + in_face(facets_));
+    }
+  }
+
+  std::string_view next_or_truncated() {
+    std::string_view token;
+    if (!tokens_.next(token)) fail(file_, "ASCII STL: the file ends before 'endsolid' (the file is truncated)" + in_face(facets_));
+    return token;
+  }
+
+  Tokens tokens_;
+  const std::string& file_;
+  uint64_t facets_ = 0;
+};
 
 }  // namespace
 
@@ -48,9 +163,12 @@ StlContents check_stl(std::string_view bytes, const std::string& file) {
     contents.triangle_count = binary_triangle_count(bytes);
     if (kBinaryHeaderSize + kBinaryTriangleSize * contents.triangle_count == size) return contents;
   }
-  if (starts_with_solid(bytes) && bytes.find('\0') == std::string_view::npos) {
-    check_ascii(bytes, file);
-    return {StlEncoding::Ascii, 0};
+  size_t start = skip_white(bytes, 0);
+  if (bytes.substr(start, 5) == "solid" && bytes.find('\0') == std::string_view::npos) {
+    size_t at = find_binary_byte(bytes);
+    if (at != std::string_view::npos) fail(file, "the ASCII STL contains a control byte at offset " + std::to_string(at));
+    std::string_view text = bytes.substr(start);
+    return {StlEncoding::Ascii, AsciiStlWalk(text, file).walk(), start};
   }
   if (size < kBinaryHeaderSize)
     fail(file, "not an STL file: too short for a binary STL (" + std::to_string(size) +

@@ -44,7 +44,8 @@ std::string_view trim_blanks(std::string_view line) {
 bool parse_real(std::string_view token, double& value) {
   // from_chars rejects a leading '+', which every writer of these formats may emit.
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty()) return false;
+  // "nan(payload)" is from_chars syntax that assimp's parser stops halfway through.
+  if (token.empty() || token.find('(') != std::string_view::npos) return false;
   const char* end = token.data() + token.size();
   auto [ptr, ec] = std::from_chars(token.data(), end, value, std::chars_format::general);
   // Literals beyond double's range ("1e999", "1e-999") are numbers all the same: strtod

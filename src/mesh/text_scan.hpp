@@ -46,8 +46,9 @@ class TokenReader {
 // `line` without blanks at either end.
 std::string_view trim_blanks(std::string_view line);
 
-// A real number: from_chars syntax plus an optional leading '+'; "nan" and "inf" parse (the
-// caller decides whether they are allowed). The whole token must be the number.
+// A real number: from_chars syntax plus an optional leading '+', without "nan(payload)";
+// "nan" and "inf" parse (the caller decides whether they are allowed). The whole token must
+// be the number. Everything this accepts, assimp's fast_atoreal_move reads without throwing.
 bool parse_real(std::string_view token, double& value);
 
 // A decimal integer with an optional sign; the whole token must be the number.

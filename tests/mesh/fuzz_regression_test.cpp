@@ -1,0 +1,55 @@
+// Inputs the fuzzer (fuzz/mesh_fuzz.cpp) once found a bug with, cut down to the point.
+// Each must end in a clean InputError or a clean load, never in a crash, a leak or undefined
+// behaviour; run the suite under CONVRAY_SANITIZE=ON to check the last two.
+#include <gtest/gtest.h>
+
+#include "mesh/load.hpp"
+#include "mesh_test_support.hpp"
+
+namespace convray::mesh {
+namespace {
+
+using testing::input_error_of;
+
+const std::string kTriangleStl =
+    "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n   vertex 0 1 0\n"
+    "  endloop\n endfacet\nendsolid t\n";
+
+TEST(FuzzRegression, ObjSkinWeightOutOfIntRange) {
+  // tinyobjloader converted the joint id to int without a range check (UB). It no longer
+  // sees any line but `v` and `f`.
+  LoadedMesh mesh = load_mesh_from_memory("v 0 0 0\nvw 1 5257311121191336 -0.85\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "w.obj");
+  EXPECT_EQ(mesh.soup.size(), 1u);
+}
+
+TEST(FuzzRegression, AsciiStlThatAssimpGivesUpOnLeaked) {
+  // assimp's ASCII STL reader leaks its meshes whenever it throws; here it threw because
+  // it reads a vertex's numbers skipping blanks only, not line ends.
+  std::string stl = kTriangleStl;
+  stl.replace(stl.find("vertex 1 0 0"), 12, "vertex\r1 0 0");
+  EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(stl, "cr.stl"); }),
+            "cr.stl:5: ASCII STL: expected three numbers on the line (face 0)");
+}
+
+TEST(FuzzRegression, AsciiStlNumberAssimpCannotParse) {
+  std::string stl = kTriangleStl;
+  stl.replace(stl.find("vertex 1 0 0"), 12, "vertex 1 0 nan(7)");
+  EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(stl, "nan.stl"); }),
+            "nan.stl:5: ASCII STL: expected a number but found 'nan(7)' (face 0)");
+}
+
+TEST(FuzzRegression, AsciiStlKeywordInTheSolidName) {
+  std::string stl = kTriangleStl;
+  stl.replace(0, 7, "solid my vertex");
+  EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(stl, "name.stl"); }),
+            "name.stl:1: ASCII STL: the solid's name contains the keyword 'vertex'");
+}
+
+TEST(FuzzRegression, AsciiStlWithSeveralSolids) {
+  LoadedMesh mesh = load_mesh_from_memory("\n\n" + kTriangleStl + kTriangleStl, "two.stl");
+  EXPECT_EQ(mesh.soup.size(), 2u);
+  EXPECT_EQ(mesh.format, "STL ascii");
+}
+
+}  // namespace
+}  // namespace convray::mesh

@@ -1,0 +1,304 @@
+// Every malformed input is an InputError that names the file, says what is wrong and, where
+// it applies, the element (counted from 0) and the line.
+#include <gtest/gtest.h>
+
+#include "mesh/load.hpp"
+#include "mesh/procedural.hpp"
+#include "mesh/write.hpp"
+#include "mesh_test_support.hpp"
+
+namespace convray::mesh {
+namespace {
+
+using testing::input_error_of;
+
+std::string error_loading(const std::string& bytes, const std::string& name) {
+  return input_error_of([&] { load_mesh_from_memory(bytes, name); });
+}
+
+const std::string kPlyAsciiHeader =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 2\nproperty list uchar int vertex_indices\nend_header\n";  // 9 lines
+
+// Bytes of a file written by our writer, for the binary formats.
+std::string written(const TriangleSoup& soup, const std::string& name, MeshEncoding encoding) {
+  testing::ScratchDirectory scratch;
+  save_mesh(soup, scratch.file(name), encoding);
+  return testing::read_bytes(scratch.file(name));
+}
+
+TriangleSoup two_triangles() {
+  TriangleSoup soup;
+  soup.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  soup.triangles = {{0, 1, 2}, {1, 3, 2}};
+  return soup;
+}
+
+// ---- Non-finite coordinates --------------------------------------------------------------
+
+TEST(LoadErrors, NanCoordinateInObj) {
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n", "nan.obj"),
+            "nan.obj:2: vertex has a non-finite coordinate 'nan' (vertex 1)");
+}
+
+TEST(LoadErrors, InfiniteCoordinateInObj) {
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 0 1e999 0\nf 1 2 3\n", "inf.obj"),
+            "inf.obj:3: vertex has a non-finite coordinate '1e999' (vertex 2)");
+}
+
+TEST(LoadErrors, NanCoordinateInPly) {
+  EXPECT_EQ(error_loading(kPlyAsciiHeader + "0 0 0\n1 0 0\n0 nan 0\n1 1 0\n3 0 1 2\n3 1 3 2\n", "nan.ply"),
+            "nan.ply: vertex has a non-finite coordinate (vertex 2)");
+}
+
+TEST(LoadErrors, NanCoordinateInOff) {
+  EXPECT_EQ(error_loading("OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", "nan.off"),
+            "nan.off:4: vertex has a non-finite coordinate 'nan' (vertex 1)");
+}
+
+TEST(LoadErrors, NanCoordinateInBinaryStl) {
+  TriangleSoup soup = two_triangles();
+  soup.vertices[3].y = std::nan("");
+  EXPECT_EQ(error_loading(written(soup, "nan.stl", MeshEncoding::Binary), "nan.stl"),
+            "nan.stl: triangle corner has a non-finite coordinate (face 1)");
+}
+
+// ---- Indices out of range ----------------------------------------------------------------
+
+TEST(LoadErrors, IndexOutOfRangeInAsciiPly) {
+  EXPECT_EQ(error_loading(kPlyAsciiHeader + "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 90 2\n", "bunny.ply"),
+            "bunny.ply:15: face refers to vertex 90, but the file has 4 vertices (face 1)");
+}
+
+TEST(LoadErrors, NegativeIndexInBinaryPly) {
+  TriangleSoup soup = two_triangles();
+  std::string bytes = written(soup, "bad.ply", MeshEncoding::Binary);
+  // The last index of the last face is the last four bytes: make it -5 as an int32.
+  bytes.replace(bytes.size() - 4, 4, std::string("\xfb\xff\xff\xff", 4));
+  // Our writer declares the indices uint: for -5 they must be int.
+  bytes.replace(bytes.find("uchar uint"), 10, "uchar int");
+  EXPECT_EQ(error_loading(bytes, "bad.ply"), "bad.ply: face refers to vertex -5, but the file has 4 vertices (face 1)");
+}
+
+TEST(LoadErrors, IndexOutOfRangeInOff) {
+  EXPECT_EQ(error_loading("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 1 9\n", "bad.off"),
+            "bad.off:8: face refers to vertex 9, but the file has 4 vertices (face 1)");
+}
+
+TEST(LoadErrors, IndexOutOfRangeInObj) {
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n", "bad.obj"),
+            "bad.obj:5: face refers to vertex 9, but the file has 3 vertices (face 1)");
+}
+
+TEST(LoadErrors, RelativeIndexBeforeTheFirstVertexInObj) {
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n", "bad.obj"),
+            "bad.obj:4: face refers to vertex -4, but only 3 vertices precede it (face 0)");
+}
+
+TEST(LoadErrors, ZeroIndexInObj) {
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "bad.obj"),
+            "bad.obj:4: face corner '0' does not start with a vertex index (a non-zero integer; OBJ counts from 1) "
+            "(face 0)");
+}
+
+// ---- Truncated files ---------------------------------------------------------------------
+
+TEST(LoadErrors, TruncatedBinaryPly) {
+  std::string bytes = written(two_triangles(), "cut.ply", MeshEncoding::Binary);
+  EXPECT_EQ(error_loading(bytes.substr(0, bytes.size() - 6), "cut.ply"),
+            "cut.ply: the file ends in the middle of the data: the header declares 2 face elements "
+            "(the file is truncated) (face 1)");
+}
+
+TEST(LoadErrors, TruncatedBinaryPlyInTheVertices) {
+  std::string bytes = written(two_triangles(), "cut.ply", MeshEncoding::Binary);
+  size_t body = bytes.find("end_header\n") + 11;
+  EXPECT_EQ(error_loading(bytes.substr(0, body + 3 * 24 + 5), "cut.ply"),
+            "cut.ply: the file ends in the middle of the data: the header declares 4 vertex elements of 24 bytes, "
+            "and the data ends after 3 of them (the file is truncated) (vertex 3)");
+}
+
+TEST(LoadErrors, PlyHeaderCountBeyondTheData) {
+  // A header that promises four billion vertices must not make anyone allocate them.
+  std::string bytes = written(two_triangles(), "huge.ply", MeshEncoding::Binary);
+  bytes.replace(bytes.find("vertex 4"), 8, "vertex 4000000000");
+  EXPECT_EQ(error_loading(bytes, "huge.ply"),
+            "huge.ply: the file ends in the middle of the data: the header declares 4000000000 vertex elements of "
+            "24 bytes, and the data ends after 5 of them (the file is truncated) (vertex 5)");
+}
+
+TEST(LoadErrors, TruncatedAsciiPly) {
+  EXPECT_EQ(error_loading(kPlyAsciiHeader + "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n", "cut.ply"),
+            "cut.ply: the file ends before all data: the header declares 2 face elements (the file is truncated) "
+            "(face 1)");
+}
+
+TEST(LoadErrors, AsciiPlyLineWithTooFewValues) {
+  EXPECT_EQ(error_loading(kPlyAsciiHeader + "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 1\n", "cut.ply"),
+            "cut.ply:15: too few values on the line: 'vertex_indices' is missing (face 1)");
+}
+
+TEST(LoadErrors, TruncatedBinaryStl) {
+  std::string bytes = written(two_triangles(), "cut.stl", MeshEncoding::Binary);
+  EXPECT_EQ(error_loading(bytes.substr(0, bytes.size() - 20), "cut.stl"),
+            "cut.stl: binary STL of the wrong size: the header declares 2 triangles, which take 84 + 50 x 2 = 184 "
+            "bytes, but the file has 164 bytes (the file is truncated)");
+}
+
+TEST(LoadErrors, TruncatedAsciiStl) {
+  std::string bytes = written(two_triangles(), "cut.stl", MeshEncoding::Ascii);
+  EXPECT_EQ(error_loading(bytes.substr(0, bytes.find("endsolid")), "cut.stl"),
+            "cut.stl: ASCII STL: the file ends before 'endsolid' (the file is truncated) (face 2)");
+  size_t last_vertex = bytes.rfind("vertex");  // on line 13, in face 1
+  EXPECT_EQ(error_loading(bytes.substr(0, last_vertex + 9), "cut.stl"),
+            "cut.stl:13: ASCII STL: expected three numbers on the line (face 1)");
+}
+
+TEST(LoadErrors, ObjVertexWithMissingCoordinate) {
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 0 1", "cut.obj"),
+            "cut.obj:3: vertex has 2 coordinates; 3 are needed (vertex 2)");
+}
+
+TEST(LoadErrors, ObjFaceWithMissingCorner) {
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2", "cut.obj"),
+            "cut.obj:5: face has 2 corners; at least 3 are needed (face 1)");
+}
+
+TEST(LoadErrors, ObjCoordinateThatIsNotANumber) {
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0,5 0\nv 0 1 0\nf 1 2 3\n", "bad.obj"),
+            "bad.obj:2: vertex coordinate '0,5' is not a number (vertex 1)");
+}
+
+TEST(LoadErrors, TruncatedOffFaces) {
+  EXPECT_EQ(error_loading("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n", "cut.off"),
+            "cut.off: the file ends after 1 of the 2 faces the header declares (the file is truncated) (face 1)");
+}
+
+TEST(LoadErrors, TruncatedOffVertices) {
+  EXPECT_EQ(error_loading("OFF\n4 2 0\n0 0 0\n1 0 0\n", "cut.off"),
+            "cut.off: the file ends after 2 of the 4 vertices the header declares (the file is truncated) "
+            "(vertex 2)");
+}
+
+TEST(LoadErrors, OffFaceWithMissingIndex) {
+  EXPECT_EQ(error_loading("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 1\n", "cut.off"),
+            "cut.off:8: face line has fewer indices than its 3 corners (face 1)");
+}
+
+TEST(LoadErrors, OffVertexWithMissingCoordinate) {
+  EXPECT_EQ(error_loading("OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", "cut.off"),
+            "cut.off:4: vertex line has 2 numbers; 3 are needed (vertex 1)");
+}
+
+// ---- Not a mesh at all ----------------------------------------------------------------
+
+TEST(LoadErrors, UnknownFormat) {
+  EXPECT_EQ(error_loading("v 0 0 0\n", "points.xyz"),
+            "points.xyz: unknown mesh format '.xyz' (expected .obj, .ply, .stl, .off, optionally .gz)");
+  EXPECT_EQ(error_loading("", "archive.tar.gz"),
+            "archive.tar.gz: unknown mesh format '.tar.gz' (expected .obj, .ply, .stl, .off, optionally .gz)");
+  EXPECT_EQ(error_loading("", "README"),
+            "README: unknown mesh format: the name has no extension (expected .obj, .ply, .stl, .off, optionally .gz)");
+}
+
+TEST(LoadErrors, UnknownFormatIsReportedBeforeOpeningTheFile) {
+  EXPECT_EQ(input_error_of([] { load_mesh("/nonexistent/model.3ds"); }),
+            "/nonexistent/model.3ds: unknown mesh format '.3ds' (expected .obj, .ply, .stl, .off, optionally .gz)");
+}
+
+TEST(LoadErrors, MissingFile) {
+  EXPECT_EQ(input_error_of([] { load_mesh("/nonexistent/model.ply"); }),
+            "/nonexistent/model.ply: cannot open the file: No such file or directory");
+}
+
+TEST(LoadErrors, Directory) {
+  testing::ScratchDirectory scratch;
+  std::filesystem::create_directory(scratch.file("folder.ply"));
+  EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("folder.ply")); }),
+            scratch.file("folder.ply") + ": cannot read the file: it is a directory");
+}
+
+TEST(LoadErrors, EmptyFile) {
+  for (const char* name : {"empty.obj", "empty.ply", "empty.stl", "empty.off", "empty.ply.gz"}) {
+    EXPECT_EQ(error_loading("", name), std::string(name) + ": the file is empty");
+  }
+}
+
+TEST(LoadErrors, NoTrianglesAtAll) {
+  EXPECT_EQ(error_loading("# nothing but vertices\nv 0 0 0\nv 1 0 0\n", "points.obj"),
+            "points.obj: the file has no faces, so there are no triangles to render");
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n", "flat.obj"),
+            "flat.obj: no triangles left: all 2 faces are degenerate (1 with zero area, 1 with a repeated vertex)");
+}
+
+const std::string kGarbage("\x8f\x01garbage\x00\xff\x13\x37 not a mesh \x7f\x02", 26);
+
+TEST(LoadErrors, GarbageBytes) {
+  EXPECT_EQ(error_loading(kGarbage, "junk.ply"), "junk.ply: not a PLY file: it does not start with the line 'ply'");
+  EXPECT_EQ(error_loading(kGarbage, "junk.obj"),
+            "junk.obj: the file contains the control byte 0x01 at offset 1, which has no place in an OBJ (text) file");
+  EXPECT_EQ(error_loading(kGarbage, "junk.off"),
+            "junk.off: the file contains a control byte at offset 1, which has no place in an OFF (text) file; "
+            "binary OFF is not supported");
+  EXPECT_EQ(error_loading(kGarbage, "junk.stl"),
+            "junk.stl: not an STL file: too short for a binary STL (26 bytes, the header alone is 84) and not "
+            "ASCII STL (it does not start with 'solid')");
+}
+
+TEST(LoadErrors, TextThatIsNoMesh) {
+  EXPECT_EQ(error_loading("Dear reader,\nthis is a letter.\n", "letter.off"),
+            "letter.off:1: not an OFF file: it does not start with the keyword OFF (or COFF, NOFF, STOFF, 4OFF, ...)");
+}
+
+// ---- gzip ------------------------------------------------------------------------------
+
+std::string gzipped(const std::string& bytes) {
+  testing::ScratchDirectory scratch;
+  testing::write_gzip(scratch.file("x.gz"), bytes);
+  return testing::read_bytes(scratch.file("x.gz"));
+}
+
+TEST(LoadErrors, CorruptedGzip) {
+  std::string text = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  std::string bytes = gzipped(text);
+  bytes[bytes.size() - 6] ^= 0x55;  // inside the CRC-32 of the trailer
+  EXPECT_EQ(error_loading(bytes, "tri.off.gz"), "tri.off.gz: gzip: corrupt data (incorrect data check)");
+}
+
+TEST(LoadErrors, TruncatedGzip) {
+  std::string bytes = gzipped("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(error_loading(bytes.substr(0, bytes.size() - 10), "tri.off.gz"),
+            "tri.off.gz: gzip: the compressed data ends early (the file is truncated)");
+}
+
+TEST(LoadErrors, NotGzipAtAll) {
+  EXPECT_EQ(error_loading("OFF\n3 1 0\n", "tri.off.gz"),
+            "tri.off.gz: gzip: not gzip data (the file does not start with 1f 8b)");
+}
+
+TEST(LoadErrors, DecompressionBomb) {
+  std::string bytes = gzipped(std::string(4 << 20, '\0'));  // 4 MiB of zeros: about 4 KiB compressed
+  EXPECT_EQ(error_loading(bytes, "bomb.ply.gz"),
+            "bomb.ply.gz: gzip: the decompressed data exceeds 1048576 bytes (100 times the compressed size, at least "
+            "1 MiB, at most 4 GiB); refusing what looks like a decompression bomb");
+}
+
+TEST(LoadErrors, ErrorsInsideGzipNameTheGzipFile) {
+  std::string bytes = gzipped("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 1 9\n");
+  EXPECT_EQ(error_loading(bytes, "bad.off.gz"),
+            "bad.off.gz:8: face refers to vertex 9, but the file has 4 vertices (face 1)");
+}
+
+TEST(LoadErrors, AreInputErrorsWithTheFileAsLocation) {
+  try {
+    load_mesh_from_memory("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "loc.off");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.loc().file, "loc.off");
+    EXPECT_EQ(error.loc().line, 6);
+    EXPECT_EQ(error.message(), "face refers to vertex 7, but the file has 3 vertices (face 0)");
+  }
+}
+
+}  // namespace
+}  // namespace convray::mesh
