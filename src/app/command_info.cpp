@@ -7,7 +7,7 @@
 #include "mesh/stats.hpp"
 #include "util/error.hpp"
 
-namespace convray {
+namespace convray::app {
 namespace {
 
 // Six significant digits: enough to compare sizes, short enough to read.
@@ -75,4 +75,4 @@ int run_info(const std::string& path, std::ostream& out, std::ostream& err) {
   }
 }
 
-}  // namespace convray
+}  // namespace convray::app

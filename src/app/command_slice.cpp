@@ -89,8 +89,9 @@ void write_image_atomically(const std::string& path, int w, int h, const std::ve
   namespace fs = std::filesystem;
   const fs::path target(path);
   // Keep the extension so OpenImageIO picks the same format for the temporary file.
-  const fs::path partial = target.parent_path() / ("." + target.stem().string() + ".partial" +
-                                                   target.extension().string());
+  std::string partial_name = ".";
+  partial_name.append(target.stem().string()).append(".partial").append(target.extension().string());
+  const fs::path partial = target.parent_path() / partial_name;
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw InputError({path}, "cannot write this image format: " + OIIO::geterror());
   const OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);

@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (*info) return convray::run_info(info_path, std::cout, std::cerr);
+  if (*info) return convray::app::run_info(info_path, std::cout, std::cerr);
   if (*slice) return convray::app::run_slice(slice_options, std::cout, std::cerr);
   if (*field) return convray::app::run_field(field_options, std::cin, std::cout, std::cerr);
   return 2;

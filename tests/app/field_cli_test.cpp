@@ -1,59 +1,31 @@
 // `convray field` end to end: the binary reads points on stdin and must reproduce the
 // analytic field of an (effectively) infinite plane, and reject malformed input with
 // "stdin:LINE: ..." and exit code 2.
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/cli.hpp"
+
+namespace convray {
 namespace {
 
-namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 
-struct Outcome {
-  int exit_code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class FieldCommand : public ::testing::Test {
+class FieldCommand : public testing::CliTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("convray_field_cli_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    CliTest::SetUp();
     // A 200 x 200 square in z = 0, written by hand (not by our writer).
-    std::ofstream(dir_ / "square.obj") << "v -100 -100 0\nv 100 -100 0\nv 100 100 0\nv -100 100 0\n"
-                                          "f 1 2 3\nf 1 3 4\n";
+    std::ofstream(file("square.obj")) << "v -100 -100 0\nv 100 -100 0\nv 100 100 0\nv -100 100 0\n"
+                                         "f 1 2 3\nf 1 3 4\n";
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  Outcome run(const std::string& args, const std::string& stdin_text) {
-    std::ofstream(dir_ / "in.txt") << stdin_text;
-    const std::string cmd = std::string(CONVRAY_BINARY) + " " + args + " < " +
-                            (dir_ / "in.txt").string() + " > " + (dir_ / "out.txt").string() +
-                            " 2> " + (dir_ / "err.txt").string();
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out.txt"),
-            slurp(dir_ / "err.txt")};
+  testing::CliRun run(const std::string& args, const std::string& stdin_text) const {
+    return run_convray(args, stdin_text);
   }
-  std::string square() const { return (dir_ / "square.obj").string(); }
-
-  fs::path dir_;
+  std::string square() const { return file("square.obj"); }
 };
 
 std::vector<std::vector<double>> parse_rows(const std::string& text) {
@@ -73,7 +45,7 @@ TEST_F(FieldCommand, ReproducesTheInfinitePlaneAndItsGradient) {
   const std::vector<double> heights = {0.0, 0.3, -0.7, 1.2, 1.6};
   std::string input;
   for (double h : heights) input += "0.25 -3.5 " + std::to_string(h) + "\n";
-  const Outcome result = run("field --mesh " + square() + " --radius 1.5 --strength 2", input);
+  const testing::CliRun result = run("field --mesh " + square() + " --radius 1.5 --strength 2", input);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto rows = parse_rows(result.out);
   ASSERT_EQ(rows.size(), heights.size());
@@ -91,7 +63,7 @@ TEST_F(FieldCommand, ReproducesTheInfinitePlaneAndItsGradient) {
 }
 
 TEST_F(FieldCommand, PrintsSeventeenSignificantDigits) {
-  const Outcome result = run("field --mesh " + square() + " --radius 1", "0 0 0.1\n");
+  const testing::CliRun result = run("field --mesh " + square() + " --radius 1", "0 0 0.1\n");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   std::istringstream in(result.out);
   std::string first;
@@ -104,13 +76,13 @@ TEST_F(FieldCommand, PrintsSeventeenSignificantDigits) {
 }
 
 TEST_F(FieldCommand, AcceptsTabsSignsExponentsAndCrLf) {
-  const Outcome result = run("field --mesh " + square() + " --radius 1", "+0\t-0.0  1e-1\r\n");
+  const testing::CliRun result = run("field --mesh " + square() + " --radius 1", "+0\t-0.0  1e-1\r\n");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(parse_rows(result.out).size(), 1u);
 }
 
 TEST_F(FieldCommand, MalformedLineStopsWithLineNumberAndExitCode2) {
-  const Outcome result = run("field --mesh " + square() + " --radius 1", "0 0 0\n1 2\n0 0 0\n");
+  const testing::CliRun result = run("field --mesh " + square() + " --radius 1", "0 0 0\n1 2\n0 0 0\n");
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("stdin:2: expected three numbers 'x y z', found 2 numbers"),
             std::string::npos)
@@ -121,7 +93,7 @@ TEST_F(FieldCommand, MalformedLineStopsWithLineNumberAndExitCode2) {
 TEST_F(FieldCommand, EachKindOfBadLineIsNamed) {
   const std::string mesh = square();
   const auto err_for = [&](const std::string& line) {
-    const Outcome r = run("field --mesh " + mesh + " --radius 1", line);
+    const testing::CliRun r = run("field --mesh " + mesh + " --radius 1", line);
     EXPECT_EQ(r.exit_code, 2) << line;
     return r.err;
   };
@@ -135,10 +107,10 @@ TEST_F(FieldCommand, EachKindOfBadLineIsNamed) {
 }
 
 TEST_F(FieldCommand, BadCommandLineAndMissingMeshExitWith2) {
-  Outcome r = run("field --mesh " + square() + " --radius -1", "");
+  testing::CliRun r = run("field --mesh " + square() + " --radius -1", "");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("radius"), std::string::npos) << r.err;
-  r = run("field --mesh " + (dir_ / "missing.obj").string() + " --radius 1", "");
+  r = run("field --mesh " + file("missing.obj") + " --radius 1", "");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("missing.obj"), std::string::npos) << r.err;
   r = run("field --radius 1", "");
@@ -147,3 +119,4 @@ TEST_F(FieldCommand, BadCommandLineAndMissingMeshExitWith2) {
 }
 
 }  // namespace
+}  // namespace convray
