@@ -256,52 +256,57 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
   bool try_lean = true;
   for (size_t base = 0; base < count; base += kChunk) {
     const size_t lanes = std::min(kChunk, count - base);
-    // Phase 1, per lane: height, disk radius, and the three edges' terms. Chunks whose
-    // triangles all lie inside the support sphere take the lean path.
-    // Try the lean path while chunks keep being wholly inside (large radii); once one is not,
-    // go straight to the general path until a chunk without pie slices suggests trying again.
+    // The lean path while chunks keep being wholly inside the support sphere (large radii);
+    // after one that is not, the general path, until a chunk without pie slices suggests
+    // trying again.
     if (try_lean && !acc.per_triangle &&
         accumulate_wholly_inside<kGradient>(p, r2, inv_norm, base, lanes, index, views, acc)) {
       continue;
     }
-    const bool any_pie =
-        phase_one<kGradient>(p, r2, inv_norm, base, lanes, index, views, st);
+    const bool any_pie = phase_one<kGradient>(p, r2, inv_norm, base, lanes, index, views, st);
     try_lean = !any_pie;
-    // Phase 2: the pie angles, the only transcendental work, skipped when nothing is clipped.
-    // (A separate loop, so the call is unconditional and libmvec's SIMD atan2 serves it.)
-    double theta[kChunk];
-    if (any_pie) {
-#pragma omp simd
-      for (size_t t = 0; t < lanes; ++t) {
-        theta[t] = atan2(st.pie_y[0][t], st.pie_x[0][t]) + atan2(st.pie_y[1][t], st.pie_x[1][t]) +
-                   atan2(st.pie_y[2][t], st.pie_x[2][t]);
-      }
-    } else {
-      std::fill(theta, theta + lanes, 0.0);
-    }
-    double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
-#pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
-    for (size_t t = 0; t < lanes; ++t) {
-      const double r0sq = st.r0sq[t];
-      const double r4 = r0sq * r0sq;
-      // No edge reaches the disk: it is wholly inside the triangle or wholly outside.
-      const double whole = st.o_inside[t] ? 2.0 * kPi : 0.0;
-      const double value =
-          st.touches[t] ? st.inside[t] + r4 * r0sq * theta[t] : r4 * r0sq * whole;
-      sum += st.scale[t] * value;
-      if (acc.per_triangle) acc.per_triangle[base + t] = st.scale[t] * value;
-      if constexpr (kGradient) {
-        const double inplane = st.touches[t] ? 1.0 : 0.0;
-        const double dr0 = st.touches[t] ? st.inside_dr0[t] + 3.0 * r4 * theta[t] : 3.0 * r4 * whole;
-        const double dn = -2.0 * st.h[t] * dr0;  // r0^2 = R^2 - h^2 moves with P as -2h n
-        sgx += st.scale[t] * (inplane * st.gx[t] + dn * st.nx[t]);
-        sgy += st.scale[t] * (inplane * st.gy[t] + dn * st.ny[t]);
-        sgz += st.scale[t] * (inplane * st.gz[t] + dn * st.nz[t]);
-      }
-    }
-    acc.value += sum;
-    acc.gradient += Vec3(sgx, sgy, sgz);
+    phase_two<kGradient>(st, base, lanes, any_pie, acc);
   }
+}
+
+// Phase 2: the pie angles (the only transcendental work, skipped when nothing is clipped),
+// then each lane's value and gradient.
+template <bool kGradient>
+void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, bool any_pie,
+                              Accumulator& acc) const {
+  // A separate loop, so the call is unconditional and libmvec's SIMD atan2 serves it.
+  double theta[kChunk];
+  if (any_pie) {
+#pragma omp simd
+    for (size_t t = 0; t < lanes; ++t) {
+      theta[t] = atan2(st.pie_y[0][t], st.pie_x[0][t]) + atan2(st.pie_y[1][t], st.pie_x[1][t]) +
+                 atan2(st.pie_y[2][t], st.pie_x[2][t]);
+    }
+  } else {
+    std::fill(theta, theta + lanes, 0.0);
+  }
+  double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
+#pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
+  for (size_t t = 0; t < lanes; ++t) {
+    const double r0sq = st.r0sq[t];
+    const double r4 = r0sq * r0sq;
+    // No edge reaches the disk: it is wholly inside the triangle or wholly outside.
+    const double whole = st.o_inside[t] ? 2.0 * kPi : 0.0;
+    const double value =
+        st.touches[t] ? st.inside[t] + r4 * r0sq * theta[t] : r4 * r0sq * whole;
+    sum += st.scale[t] * value;
+    if (acc.per_triangle) acc.per_triangle[base + t] = st.scale[t] * value;
+    if constexpr (kGradient) {
+      const double inplane = st.touches[t] ? 1.0 : 0.0;
+      const double dr0 = st.touches[t] ? st.inside_dr0[t] + 3.0 * r4 * theta[t] : 3.0 * r4 * whole;
+      const double dn = -2.0 * st.h[t] * dr0;  // r0^2 = R^2 - h^2 moves with P as -2h n
+      sgx += st.scale[t] * (inplane * st.gx[t] + dn * st.nx[t]);
+      sgy += st.scale[t] * (inplane * st.gy[t] + dn * st.ny[t]);
+      sgz += st.scale[t] * (inplane * st.gz[t] + dn * st.nz[t]);
+    }
+  }
+  acc.value += sum;
+  acc.gradient += Vec3(sgx, sgy, sgz);
 }
 
 namespace {

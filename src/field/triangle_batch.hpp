@@ -50,6 +50,9 @@ class TriangleBatch {
   bool accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm, size_t base,
                                 size_t lanes, Index index, const detail::EdgeView* views,
                                 Accumulator& acc) const;
+  template <bool kGradient>
+  void phase_two(const detail::ChunkState& st, size_t base, size_t lanes, bool any_pie,
+                 Accumulator& acc) const;
   template <bool kGradient, class Index>
   bool phase_one(const Vec3& p, double r2, double inv_norm, size_t base, size_t lanes,
                  Index index, const detail::EdgeView* views, detail::ChunkState& st) const;
