@@ -17,7 +17,8 @@ constexpr const char* kDescription =
     "\n"
     "Examples:\n"
     "  convray info scenes/models/soup.obj\n"
-    "  echo '0 0 0' | convray field --mesh scenes/models/soup.obj --radius 0.2\n";
+    "  echo '0 0 0' | convray field --mesh scenes/models/soup.obj --radius 0.2\n"
+    "  convray slice scenes/models/soup.obj --radius 0.25 --offset 0.1 -o slice.png\n";
 
 // A finite, strictly positive number: radii and sizes.
 const auto kPositive = CLI::Validator(
@@ -94,7 +95,19 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "convray: " << e.what() << "\nRun 'convray --help' for usage.\n";
+    // Name an unknown command outright rather than CLI11's "a subcommand is required".
+    const auto is_command = [&](const std::string& name) {
+      for (const CLI::App* sub : app.get_subcommands({})) {
+        if (sub->get_name() == name) return true;
+      }
+      return false;
+    };
+    const bool unknown_command = argc > 1 && argv[1][0] != '-' && !is_command(argv[1]);
+    std::cerr << "convray: "
+              << (unknown_command ? "unknown command '" + std::string(argv[1]) +
+                                        "' (expected info, field or slice)"
+                                  : std::string(e.what()))
+              << "\nRun 'convray --help' for usage.\n";
     return 2;
   }
 
