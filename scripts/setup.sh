@@ -45,8 +45,8 @@ fi
 echo "==> default job: report the example soup, sample its field, picture a slice"
 mesh=scenes/models/soup.obj
 ./build/convray info "$mesh"
-echo "field at three points (F dF/dx dF/dy dF/dz), radius 0.25:"
-printf '0 0 0\n0.5 0 0\n1 0.2 0\n' | ./build/convray field --mesh "$mesh" --radius 0.25
+echo "field at three points on and near the shell (F dF/dx dF/dy dF/dz), radius 0.25:"
+printf '1 0 0\n0 0.95 0.2\n0 0 1.15\n' | ./build/convray field --mesh "$mesh" --radius 0.25
 mkdir -p out
 ./build/convray slice "$mesh" --radius 0.25 --offset 0.1 --axis z --at 0 --size 800x600 \
   -o out/slice.png
