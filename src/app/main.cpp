@@ -1,6 +1,9 @@
 // convray command line: parse the arguments, hand each subcommand to its run_* function.
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <iostream>
 #include <string>
 
@@ -20,18 +23,41 @@ constexpr const char* kDescription =
     "  echo '0 0 0' | convray field --mesh scenes/models/soup.obj --radius 0.2\n"
     "  convray slice scenes/models/soup.obj --radius 0.25 --offset 0.1 -o slice.png\n";
 
-// A finite, strictly positive number: radii and sizes.
-const auto kPositive = CLI::Validator(
-    [](const std::string& text) -> std::string {
-      const double v = std::stod(text);
-      return std::isfinite(v) && v > 0.0 ? "" : "must be a finite number > 0, got " + text;
-    },
-    "POSITIVE");
-const auto kFinite = CLI::Validator(
-    [](const std::string& text) -> std::string {
-      return std::isfinite(std::stod(text)) ? "" : "must be a finite number, got " + text;
-    },
-    "FINITE");
+// The whole text as a decimal number (std::from_chars: no hex, no trailing junk, no throw).
+std::optional<double> parse_number(const std::string& text) {
+  double value = 0.0;
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  if (begin < end && *begin == '+') ++begin;
+  const auto [stop, error] = std::from_chars(begin, end, value);
+  if (error == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
+  if (error != std::errc() || stop != end) return std::nullopt;
+  return value;
+}
+
+CLI::Validator number_check(bool positive) {
+  return CLI::Validator(
+      [positive](const std::string& text) -> std::string {
+        const std::optional<double> v = parse_number(text);
+        if (!v) return "expected a number, got '" + text + "'";
+        if (!std::isfinite(*v)) return "must be finite, got '" + text + "'";
+        if (positive && !(*v > 0.0)) return "must be > 0, got '" + text + "'";
+        return "";
+      },
+      positive ? "POSITIVE" : "FINITE");
+}
+
+// Radii and sizes; strengths and coordinates.
+const CLI::Validator kPositive = number_check(true);
+const CLI::Validator kFinite = number_check(false);
+
+// "WIDTHxHEIGHT", each 1..32768.
+bool parse_size(const std::string& text, int& width, int& height) {
+  int consumed = 0;
+  return std::sscanf(text.c_str(), "%dx%d%n", &width, &height, &consumed) == 2 &&
+         consumed == int(text.size()) && width >= 1 && height >= 1 && width <= 32768 &&
+         height <= 32768;
+}
 
 }  // namespace
 
@@ -82,10 +108,7 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
-    if (*slice && (std::sscanf(slice_size.c_str(), "%dx%d", &slice_options.width,
-                               &slice_options.height) != 2 ||
-                   slice_options.width < 1 || slice_options.height < 1 ||
-                   slice_options.width > 32768 || slice_options.height > 32768)) {
+    if (*slice && !parse_size(slice_size, slice_options.width, slice_options.height)) {
       throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 800x600, got " + slice_size);
     }
   } catch (const CLI::CallForHelp& e) {

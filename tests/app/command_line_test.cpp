@@ -1,4 +1,5 @@
 // The top-level command line: help that answers, a version, and clear refusals.
+#include <fstream>
 #include <string>
 
 #include "app/cli.hpp"
@@ -35,6 +36,30 @@ TEST_F(CommandLine, NoCommandOrUnknownOptionExitsWith2) {
   const testing::CliRun run = run_convray("info --frobnicate x.obj");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("--frobnicate"), std::string::npos) << run.err;
+}
+
+TEST_F(CommandLine, MalformedNumbersAreRefusedNeverCrash) {
+  std::ofstream(file("tri.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::string mesh = "'" + file("tri.obj") + "'";
+  const struct {
+    std::string arguments, message;
+  } cases[] = {
+      {"field --mesh " + mesh + " --radius abc", "--radius: expected a number, got 'abc'"},
+      {"field --mesh " + mesh + " --radius ''", "--radius: expected a number, got ''"},
+      {"field --mesh " + mesh + " --radius 0x10", "--radius: expected a number, got '0x10'"},
+      {"field --mesh " + mesh + " --radius 1e999", "--radius: must be finite, got '1e999'"},
+      {"field --mesh " + mesh + " --radius nan", "--radius: must be finite, got 'nan'"},
+      {"field --mesh " + mesh + " --radius 0", "--radius: must be > 0, got '0'"},
+      {"field --mesh " + mesh + " --radius 1 --strength 2x", "--strength: expected a number"},
+      {"slice " + mesh + " --radius 1 --at -inf", "--at: must be finite"},
+      {"slice " + mesh + " --radius 1 --size 80x60junk", "expected WIDTHxHEIGHT"},
+      {"slice " + mesh + " --radius 1 --size 0x60", "expected WIDTHxHEIGHT"},
+  };
+  for (const auto& c : cases) {
+    const testing::CliRun run = run_convray(c.arguments);
+    EXPECT_EQ(run.exit_code, 2) << c.arguments << "\n" << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos) << c.arguments << "\n" << run.err;
+  }
 }
 
 }  // namespace
