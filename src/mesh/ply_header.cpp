@@ -1,5 +1,6 @@
 #include "mesh/ply_header.hpp"
 
+#include <algorithm>
 #include <optional>
 
 #include "mesh/load_error.hpp"
@@ -35,7 +36,7 @@ class HeaderLines {
     line = bytes_.substr(offset_, end - offset_);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     ++line_number_;
-    offset_ = end + 1;
+    offset_ = std::min(end + 1, bytes_.size());  // a last line without '\n' ends the bytes
     check_text(line);
     return true;
   }

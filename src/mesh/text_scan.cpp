@@ -1,5 +1,6 @@
 #include "mesh/text_scan.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <cstdlib>
@@ -13,7 +14,7 @@ bool LineReader::next(std::string_view& line) {
   line = text_.substr(offset_, end - offset_);
   if (end < text_.size() && text_[end] == '\r' && end + 1 < text_.size() && text_[end + 1] == '\n')
     ++end;
-  offset_ = end + 1;
+  offset_ = std::min(end + 1, text_.size());  // a last line without a line end ends the text
   ++line_number_;
   return true;
 }
@@ -42,8 +43,12 @@ std::string_view trim_blanks(std::string_view line) {
 }
 
 bool parse_real(std::string_view token, double& value) {
-  // from_chars rejects a leading '+', which every writer of these formats may emit.
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  // from_chars rejects a leading '+', which every writer of these formats may emit. One sign
+  // only: "+-.5" is no number (assimp gave up halfway through it and leaked; fuzz-found), and
+  // from_chars already refuses "--1" and "-+1".
+  const bool had_plus = !token.empty() && token.front() == '+';
+  if (had_plus) token.remove_prefix(1);
+  if (had_plus && !token.empty() && (token.front() == '+' || token.front() == '-')) return false;
   // "nan(payload)" is from_chars syntax that assimp's parser stops halfway through.
   if (token.empty() || token.find('(') != std::string_view::npos) return false;
   const char* end = token.data() + token.size();
@@ -58,8 +63,9 @@ bool parse_real(std::string_view token, double& value) {
 }
 
 bool parse_integer(std::string_view token, int64_t& value) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty() || token.front() == '+') return false;
+  const bool had_plus = !token.empty() && token.front() == '+';
+  if (had_plus) token.remove_prefix(1);
+  if (token.empty() || token.front() == '+' || (had_plus && token.front() == '-')) return false;
   const char* end = token.data() + token.size();
   auto [ptr, ec] = std::from_chars(token.data(), end, value);
   return ec == std::errc() && ptr == end;

@@ -51,5 +51,25 @@ TEST(FuzzRegression, AsciiStlWithSeveralSolids) {
   EXPECT_EQ(mesh.format, "STL ascii");
 }
 
+TEST(FuzzRegression, AsciiStlNumberWithTwoSigns) {
+  // Our scanner took "+-.5" for -0.5 (it stripped the '+'); assimp threw on it and leaked.
+  std::string stl = kTriangleStl;
+  stl.replace(stl.find("vertex 1 0 0"), 12, "vertex 1 0 +-.5");
+  EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(stl, "signs.stl"); }),
+            "signs.stl:5: ASCII STL: expected a number but found '+-.5' (face 0)");
+}
+
+TEST(FuzzRegression, PlyHeaderEndingWithoutLineEnd) {
+  // "end_header" as the last bytes, with no line end: the body offset pointed one past the
+  // data, and string_view::substr threw std::out_of_range (the process aborted).
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header";
+  const std::string error = input_error_of([&] { load_mesh_from_memory(ply, "cut.ply"); });
+  EXPECT_NE(error.find("cut.ply"), std::string::npos) << error;
+  EXPECT_NE(error.find("truncated"), std::string::npos) << error;
+  EXPECT_NO_THROW((void)input_error_of([&] { load_mesh_from_memory(ply + " ", "cut.ply"); }));
+}
+
 }  // namespace
 }  // namespace convray::mesh
