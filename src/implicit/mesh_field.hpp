@@ -7,7 +7,7 @@
 
 #include "field/triangle.hpp"
 #include "field/triangle_batch.hpp"
-#include "implicit/triangle_grid.hpp"
+#include "implicit/support_grid.hpp"
 
 namespace convray::implicit {
 

@@ -1,4 +1,4 @@
-#include "implicit/triangle_grid.hpp"
+#include "implicit/support_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
