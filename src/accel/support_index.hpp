@@ -1,0 +1,66 @@
+#pragma once
+// The acceleration structure over the supports of skeleton primitives (Embree 3 user
+// geometry, bounds = each primitive's support). Two queries:
+//  - along a line: every primitive whose support it crosses, with the exact entry and exit;
+//  - at a point: every primitive whose skeleton lies within its radius of the point.
+// The primitives are not copied: the index keeps the spans it was given, which must outlive it.
+// This header does not include Embree; only accel/*.cpp do.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "field/arc.hpp"
+#include "field/segment.hpp"
+#include "field/triangle.hpp"
+#include "util/math.hpp"
+
+namespace convray::accel {
+
+// Primitive ids run over the spheres first, then capsules, arcs, and the triangle groups in
+// order; each span pairs with a radius per primitive (a triangle group shares one radius).
+struct SupportSources {
+  struct TriangleGroup {
+    std::span<const field::Triangle> triangles;
+    double radius = 1.0;
+  };
+  std::span<const Vec3> sphere_centers;
+  std::span<const double> sphere_radii;
+  std::span<const field::Segment> capsules;
+  std::span<const double> capsule_radii;
+  std::span<const field::Arc> arcs;
+  std::span<const double> arc_radii;
+  std::vector<TriangleGroup> triangle_groups;
+};
+
+struct SupportInterval {
+  uint32_t primitive = 0;
+  double enter = 0.0;
+  double exit = 0.0;
+};
+
+class SupportIndex {
+ public:
+  explicit SupportIndex(const SupportSources& sources);
+  ~SupportIndex();
+  SupportIndex(SupportIndex&&) noexcept;
+  SupportIndex& operator=(SupportIndex&&) noexcept;
+
+  size_t size() const;
+  Box3 bounds() const;          // union of the supports
+  size_t memory_bytes() const;  // what Embree allocated for the structure
+
+  // Appends every primitive whose support the line origin + t direction (unit direction)
+  // crosses with some t in [tmin, tmax]; the interval is the whole crossing, not clipped.
+  void intersect(const Vec3& origin, const Vec3& direction, double tmin, double tmax,
+                 std::vector<SupportInterval>& out) const;
+  // Appends every primitive within its radius of p (strictly: the field is zero at distance R).
+  void contain(const Vec3& p, std::vector<uint32_t>& out) const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace convray::accel

@@ -1,0 +1,198 @@
+#include "accel/support_shapes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace convray::accel {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+Span join(const Span& a, const Span& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  return {std::min(a.enter, b.enter), std::max(a.exit, b.exit)};
+}
+
+// Narrows `span` to where g0 + t g1 >= 0.
+void clip_half_space(double g0, double g1, Span& span) {
+  if (g1 == 0.0) {
+    if (g0 < 0.0) span = Span{};
+    return;
+  }
+  const double t = -g0 / g1;
+  if (g1 > 0.0) {
+    span.enter = std::max(span.enter, t);
+  } else {
+    span.exit = std::min(span.exit, t);
+  }
+}
+
+// The body of a capsule: points within R of the axis line whose projection lies on the
+// segment (the end balls are added by the caller).
+Span capsule_body_span(const Vec3& origin, const Vec3& direction, const Vec3& a, const Vec3& b,
+                       double radius) {
+  const Vec3 axis = b - a;
+  const double length = glm::length(axis);
+  if (length == 0.0) return {};
+  const Vec3 u = axis / length;
+  const Vec3 w = origin - a;
+  const double dw = glm::dot(direction, u);
+  const double ww = glm::dot(w, u);
+  // Components perpendicular to the axis.
+  const Vec3 dp = direction - dw * u;
+  const Vec3 wp = w - ww * u;
+  const double dp2 = glm::dot(dp, dp);
+  Span span{-kInfinity, kInfinity};
+  if (dp2 <= 0.0) {
+    if (glm::dot(wp, wp) > radius * radius) return {};
+  } else {
+    // Closest approach of the projected line to the axis, then the chord of the disk.
+    const double tc = -glm::dot(wp, dp) / dp2;
+    const Vec3 closest = wp + tc * dp;
+    const double q2 = glm::dot(closest, closest);
+    if (q2 > radius * radius) return {};
+    const double half = std::sqrt((radius * radius - q2) / dp2);
+    span = {tc - half, tc + half};
+  }
+  clip_half_space(ww, dw, span);                // projection >= 0
+  clip_half_space(length - ww, -dw, span);      // projection <= length
+  return span.empty() ? Span{} : span;
+}
+
+Vec3 triangle_normal(const field::Triangle& t) { return glm::cross(t.b - t.a, t.c - t.a); }
+
+}  // namespace
+
+Span sphere_span(const Vec3& origin, const Vec3& direction, const Vec3& center, double radius) {
+  const Vec3 w = origin - center;
+  const double tc = -glm::dot(w, direction);
+  const Vec3 closest = w + tc * direction;
+  const double q2 = glm::dot(closest, closest);
+  if (q2 > radius * radius) return {};
+  const double half = std::sqrt(radius * radius - q2);
+  return {tc - half, tc + half};
+}
+
+Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segment& segment,
+                  double radius) {
+  Span span = capsule_body_span(origin, direction, segment.a, segment.b, radius);
+  span = join(span, sphere_span(origin, direction, segment.a, radius));
+  return join(span, sphere_span(origin, direction, segment.b, radius));
+}
+
+Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
+                   double radius) {
+  const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
+  Vec3 n = triangle_normal(triangle);
+  const double n_length = glm::length(n);
+  Span span{};
+  if (n_length > 0.0) {
+    n /= n_length;
+    // The slab |height| <= R holds the whole support: a cheap rejection first.
+    const double h0 = glm::dot(origin - triangle.a, n);
+    const double h1 = glm::dot(direction, n);
+    Span prism{-kInfinity, kInfinity};
+    clip_half_space(radius - h0, -h1, prism);
+    clip_half_space(radius + h0, h1, prism);
+    if (prism.empty()) return {};
+    for (int i = 0; i < 3 && !prism.empty(); ++i) {
+      const Vec3 inward = glm::cross(n, vertex[(i + 1) % 3] - vertex[i]);
+      clip_half_space(glm::dot(origin - vertex[i], inward), glm::dot(direction, inward), prism);
+    }
+    if (!prism.empty()) span = prism;
+  }
+  for (int i = 0; i < 3; ++i) {
+    span = join(span, capsule_body_span(origin, direction, vertex[i], vertex[(i + 1) % 3], radius));
+    span = join(span, sphere_span(origin, direction, vertex[i], radius));
+  }
+  return span;
+}
+
+Span arc_span(const Vec3& origin, const Vec3& direction, const field::Arc& arc, double radius) {
+  Span span = sphere_span(origin, direction, arc.center, arc.radius + radius);
+  if (span.empty()) return {};
+  const double h0 = glm::dot(origin - arc.center, arc.axis);
+  const double h1 = glm::dot(direction, arc.axis);
+  clip_half_space(radius - h0, -h1, span);
+  clip_half_space(radius + h0, h1, span);
+  return span.empty() ? Span{} : span;
+}
+
+double distance2_to_segment(const Vec3& p, const field::Segment& segment) {
+  const Vec3 axis = segment.b - segment.a;
+  const double length2 = glm::dot(axis, axis);
+  double s = length2 > 0.0 ? glm::dot(p - segment.a, axis) / length2 : 0.0;
+  s = std::clamp(s, 0.0, 1.0);
+  const Vec3 d = p - (segment.a + s * axis);
+  return glm::dot(d, d);
+}
+
+// Closest point by Voronoi regions of the triangle (Ericson, Real-Time Collision Detection 5.1.5).
+double distance2_to_triangle(const Vec3& p, const field::Triangle& t) {
+  const Vec3 ab = t.b - t.a, ac = t.c - t.a, ap = p - t.a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  auto dist2 = [&](const Vec3& q) { return glm::dot(p - q, p - q); };
+  if (d1 <= 0.0 && d2 <= 0.0) return dist2(t.a);
+  const Vec3 bp = p - t.b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return dist2(t.b);
+  const Vec3 cp = p - t.c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return dist2(t.c);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return distance2_to_segment(p, {t.a, t.b});
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return distance2_to_segment(p, {t.a, t.c});
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return distance2_to_segment(p, {t.b, t.c});
+  const double denominator = va + vb + vc;
+  if (!(denominator > 0.0)) {  // degenerate: the nearest of the three edges
+    return std::min({distance2_to_segment(p, {t.a, t.b}), distance2_to_segment(p, {t.b, t.c}),
+                     distance2_to_segment(p, {t.c, t.a})});
+  }
+  const double v = vb / denominator, w = vc / denominator;
+  return dist2(t.a + v * ab + w * ac);
+}
+
+// On the circle the distance grows with the angle between p's direction and the point's, so
+// outside the arc's range the nearer end (in angle) is closest.
+double distance2_to_arc(const Vec3& p, const field::Arc& arc) {
+  const Vec3 w = p - arc.center;
+  const double h = glm::dot(w, arc.axis);
+  const Vec3 in_plane = w - h * arc.axis;
+  const double rho = glm::length(in_plane);
+  const Vec3 second = glm::cross(arc.axis, arc.start);
+  double phi = std::atan2(glm::dot(in_plane, second), glm::dot(in_plane, arc.start));
+  if (phi < 0.0) phi += 2.0 * kPi;
+  double gap = 0.0;  // angle from p's direction to the nearest point of the arc
+  if (rho > 0.0 && phi > arc.angle) gap = std::min(phi - arc.angle, 2.0 * kPi - phi);
+  const double r = arc.radius;
+  return h * h + rho * rho + r * r - 2.0 * rho * r * std::cos(gap);
+}
+
+Box3 segment_support_box(const field::Segment& segment, double radius) {
+  Box3 box;
+  box.extend(segment.a);
+  box.extend(segment.b);
+  return {box.lo - Vec3(radius), box.hi + Vec3(radius)};
+}
+
+Box3 triangle_support_box(const field::Triangle& triangle, double radius) {
+  Box3 box;
+  box.extend(triangle.a);
+  box.extend(triangle.b);
+  box.extend(triangle.c);
+  return {box.lo - Vec3(radius), box.hi + Vec3(radius)};
+}
+
+// The whole circle's box: along axis e, a circle of radius r with unit normal k reaches
+// r sqrt(1 - k_e^2) from its centre.
+Box3 arc_support_box(const field::Arc& arc, double radius) {
+  const Vec3 reach = arc.radius * glm::sqrt(glm::max(Vec3(0.0), Vec3(1.0) - arc.axis * arc.axis)) +
+                     Vec3(radius);
+  return {arc.center - reach, arc.center + reach};
+}
+
+}  // namespace convray::accel

@@ -1,0 +1,57 @@
+#pragma once
+// What a convolution object is made of, as plain records: skeleton primitives, each with its
+// own strength and support radius, summed into one field F and its surface F = T. Negative
+// strengths subtract. This is the description a scene (or `convray quick`) fills in; the
+// traceable, queryable form is ConvolutionSurface.
+#include <string>
+#include <vector>
+
+#include "field/arc.hpp"
+#include "field/segment.hpp"
+#include "field/triangle.hpp"
+#include "util/math.hpp"
+
+namespace convray::implicit {
+
+struct Weight {
+  double strength = 1.0;
+  double radius = 1.0;  // support radius R of the kernel (1 - r^2/R^2)^2
+};
+
+struct MeshComponent {
+  std::vector<field::Triangle> triangles;  // one weight for the whole mesh (keeps it small)
+  Weight weight;
+};
+struct SegmentComponent {
+  field::Segment segment;
+  Weight weight;
+};
+struct ArcComponent {
+  field::Arc arc;
+  Weight weight;
+};
+struct PointComponent {
+  Vec3 center{0.0};
+  Weight weight;
+};
+// POV-Ray blob components: distance kernels s (1 - d^2/r^2)^2, not integrals (field/blob.hpp).
+struct BlobSphereComponent {
+  Vec3 center{0.0};
+  Weight weight;
+};
+struct BlobCylinderComponent {
+  Vec3 base{0.0}, apex{0.0};
+  Weight weight;
+};
+
+struct ConvolutionObject {
+  std::vector<MeshComponent> meshes;
+  std::vector<SegmentComponent> segments;
+  std::vector<ArcComponent> arcs;
+  std::vector<PointComponent> points;
+  std::vector<BlobSphereComponent> blob_spheres;
+  std::vector<BlobCylinderComponent> blob_cylinders;
+  double threshold = 1.0;  // the surface is F = T; inside is F >= T
+};
+
+}  // namespace convray::implicit

@@ -1,0 +1,158 @@
+#include "implicit/convolution_surface.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "implicit/surface_impl.hpp"
+#include "implicit/surface_roots.hpp"
+
+namespace convray::implicit {
+namespace {
+
+void check_weight(const Weight& w, const char* what) {
+  if (!(w.radius > 0.0) || !std::isfinite(w.radius) || !std::isfinite(w.strength)) {
+    throw std::invalid_argument(std::string(what) +
+                                ": radius must be positive and finite, strength finite");
+  }
+}
+
+}  // namespace
+
+ConvolutionSurface::Impl::Impl(const ConvolutionObject& object) : threshold(object.threshold) {
+  if (!(threshold > 0.0) || !std::isfinite(threshold)) {
+    throw std::invalid_argument("convolution object: the threshold must be positive and finite");
+  }
+  min_radius = std::numeric_limits<double>::infinity();
+  auto note = [&](const Weight& w, const char* what) {
+    check_weight(w, what);
+    min_radius = std::min(min_radius, w.radius);
+  };
+  for (const PointComponent& c : object.points) {
+    note(c.weight, "point");
+    sphere_centers.push_back(c.center);
+    sphere_radii.push_back(c.weight.radius);
+    sphere_strengths.push_back(c.weight.strength);
+  }
+  for (const BlobSphereComponent& c : object.blob_spheres) {
+    note(c.weight, "blob sphere");
+    sphere_centers.push_back(c.center);
+    sphere_radii.push_back(c.weight.radius);
+    sphere_strengths.push_back(c.weight.strength);
+  }
+  for (const SegmentComponent& c : object.segments) {
+    note(c.weight, "segment");
+    capsules.push_back(c.segment);
+    capsule_radii.push_back(c.weight.radius);
+    capsule_strengths.push_back(c.weight.strength);
+    capsule_is_blob.push_back(0);
+  }
+  for (const BlobCylinderComponent& c : object.blob_cylinders) {
+    note(c.weight, "blob cylinder");
+    capsules.push_back({c.base, c.apex});
+    capsule_radii.push_back(c.weight.radius);
+    capsule_strengths.push_back(c.weight.strength);
+    capsule_is_blob.push_back(1);
+  }
+  for (const ArcComponent& c : object.arcs) {
+    note(c.weight, "arc");
+    arcs.push_back(c.arc);
+    arc_radii.push_back(c.weight.radius);
+    arc_strengths.push_back(c.weight.strength);
+  }
+  size_t triangle_count = 0;
+  for (const MeshComponent& m : object.meshes) triangle_count += m.triangles.size();
+  triangles.reserve(triangle_count);
+  for (const MeshComponent& m : object.meshes) {
+    if (m.triangles.empty()) continue;
+    note(m.weight, "mesh");
+    const auto first = uint32_t(triangles.size());
+    triangles.insert(triangles.end(), m.triangles.begin(), m.triangles.end());
+    groups.push_back({first, uint32_t(triangles.size()), m.weight.radius, m.weight.strength});
+  }
+  if (!std::isfinite(min_radius)) min_radius = 1.0;  // an empty object
+
+  capsule_base = uint32_t(sphere_centers.size());
+  arc_base = capsule_base + uint32_t(capsules.size());
+  triangle_base = arc_base + uint32_t(arcs.size());
+
+  accel::SupportSources sources;
+  sources.sphere_centers = sphere_centers;
+  sources.sphere_radii = sphere_radii;
+  sources.capsules = capsules;
+  sources.capsule_radii = capsule_radii;
+  sources.arcs = arcs;
+  sources.arc_radii = arc_radii;
+  for (const Group& g : groups) {
+    sources.triangle_groups.push_back(
+        {std::span<const field::Triangle>(triangles).subspan(g.first_triangle,
+                                                              g.end_triangle - g.first_triangle),
+         g.radius});
+  }
+  index = std::make_unique<accel::SupportIndex>(sources);
+}
+
+ConvolutionSurface::ConvolutionSurface(const ConvolutionObject& object)
+    : impl_(std::make_unique<Impl>(object)) {}
+ConvolutionSurface::~ConvolutionSurface() = default;
+ConvolutionSurface::ConvolutionSurface(ConvolutionSurface&&) noexcept = default;
+ConvolutionSurface& ConvolutionSurface::operator=(ConvolutionSurface&&) noexcept = default;
+
+double ConvolutionSurface::threshold() const { return impl_->threshold; }
+Box3 ConvolutionSurface::bounds() const { return impl_->index->bounds(); }
+size_t ConvolutionSurface::primitive_count() const { return impl_->index->size(); }
+
+size_t ConvolutionSurface::memory_bytes() const {
+  const Impl& m = *impl_;
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return sizeof(Impl) + bytes(m.sphere_centers) + bytes(m.sphere_radii) +
+         bytes(m.sphere_strengths) + bytes(m.capsules) + bytes(m.capsule_radii) +
+         bytes(m.capsule_strengths) + bytes(m.capsule_is_blob) + bytes(m.arcs) +
+         bytes(m.arc_radii) + bytes(m.arc_strengths) + bytes(m.triangles) + bytes(m.groups) +
+         m.index->memory_bytes();
+}
+
+field::FieldSample ConvolutionSurface::field(const Vec3& p) const {
+  thread_local std::vector<uint32_t> ids;
+  ids.clear();
+  impl_->index->contain(p, ids);
+  field::FieldSample sum;
+  for (uint32_t id : ids) sum += impl_->sample(id, p);
+  return sum;
+}
+
+void ConvolutionSurface::roots(const Ray& ray, double tmin, double tmax, std::vector<double>& out,
+                               TraceStats& stats) const {
+  find_roots(*impl_, ray, tmin, tmax, RootMode::all, out, stats);
+}
+
+std::optional<SurfaceHit> ConvolutionSurface::first_hit(const Ray& ray, double tmin, double tmax,
+                                                        TraceStats& stats) const {
+  thread_local std::vector<double> found;
+  found.clear();
+  find_roots(*impl_, ray, tmin, tmax, RootMode::first, found, stats);
+  if (found.empty()) return std::nullopt;
+  return make_surface_hit(*this, ray, found.front());
+}
+
+bool ConvolutionSurface::occluded(const Ray& ray, double tmin, double tmax,
+                                  TraceStats& stats) const {
+  thread_local std::vector<double> found;
+  found.clear();
+  find_roots(*impl_, ray, tmin, tmax, RootMode::any, found, stats);
+  return !found.empty();
+}
+
+SurfaceHit make_surface_hit(const ConvolutionSurface& surface, const Ray& ray, double t) {
+  SurfaceHit hit;
+  hit.t = t;
+  hit.point = ray.at(t);
+  const Vec3 g = surface.field(hit.point).gradient;
+  const double length = glm::length(g);
+  // Inside is F >= T, so the field falls outwards; a vanishing gradient (a touching point)
+  // falls back to facing the ray.
+  hit.normal = length > 0.0 ? -g / length : -ray.direction;
+  return hit;
+}
+
+}  // namespace convray::implicit

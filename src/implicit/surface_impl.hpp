@@ -1,0 +1,94 @@
+#pragma once
+// Inside ConvolutionSurface: the primitives in flat arrays (numbered as the support index
+// numbers them: spheres, capsules, arcs, then triangle groups) and their weighted fields.
+// Private to src/implicit.
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include "accel/support_index.hpp"
+#include "field/arc.hpp"
+#include "field/blob.hpp"
+#include "field/point.hpp"
+#include "field/segment.hpp"
+#include "field/triangle.hpp"
+#include "implicit/convolution_surface.hpp"
+
+namespace convray::implicit {
+
+struct ConvolutionSurface::Impl {
+  // Spheres: skeleton points and POV-Ray blob spheres share the kernel s (1 - d^2/R^2)^2.
+  std::vector<Vec3> sphere_centers;
+  std::vector<double> sphere_radii, sphere_strengths;
+  // Capsules: convolution segments (integrals) and blob cylinders (distance kernels).
+  std::vector<field::Segment> capsules;
+  std::vector<double> capsule_radii, capsule_strengths;
+  std::vector<uint8_t> capsule_is_blob;
+  std::vector<field::Arc> arcs;
+  std::vector<double> arc_radii, arc_strengths;
+  // Triangles of every mesh, one group (radius, strength) per mesh component.
+  std::vector<field::Triangle> triangles;
+  struct Group {
+    uint32_t first_triangle, end_triangle;
+    double radius, strength;
+  };
+  std::vector<Group> groups;
+
+  uint32_t capsule_base = 0, arc_base = 0, triangle_base = 0;
+  double threshold = 1.0;
+  double min_radius = 1.0;  // smallest support radius: the length scale of tolerances
+  std::unique_ptr<accel::SupportIndex> index;  // built last, over the arrays above
+
+  explicit Impl(const ConvolutionObject& object);
+
+  const Group& group_of(uint32_t triangle) const {
+    auto it = std::upper_bound(groups.begin(), groups.end(), triangle,
+                               [](uint32_t t, const Group& g) { return t < g.end_triangle; });
+    return *it;
+  }
+
+  // Weighted field of primitive `id` (the support index's numbering) at p.
+  double value(uint32_t id, const Vec3& p) const {
+    if (id < capsule_base) {
+      return sphere_strengths[id] * field::point_value(p, sphere_centers[id], sphere_radii[id]);
+    }
+    if (id < arc_base) {
+      const uint32_t i = id - capsule_base;
+      if (capsule_is_blob[i]) {
+        return field::blob_cylinder_field(p, capsules[i].a, capsules[i].b, capsule_radii[i],
+                                          capsule_strengths[i]).value;
+      }
+      return capsule_strengths[i] * field::segment_value(p, capsules[i], capsule_radii[i]);
+    }
+    if (id < triangle_base) {
+      const uint32_t i = id - arc_base;
+      return arc_strengths[i] * field::arc_value(p, arcs[i], arc_radii[i]);
+    }
+    const uint32_t i = id - triangle_base;
+    const Group& g = group_of(i);
+    return g.strength * field::triangle_value(p, triangles[i], g.radius);
+  }
+
+  field::FieldSample sample(uint32_t id, const Vec3& p) const {
+    if (id < capsule_base) {
+      return field::point_field(p, sphere_centers[id], sphere_radii[id]) * sphere_strengths[id];
+    }
+    if (id < arc_base) {
+      const uint32_t i = id - capsule_base;
+      if (capsule_is_blob[i]) {
+        return field::blob_cylinder_field(p, capsules[i].a, capsules[i].b, capsule_radii[i],
+                                          capsule_strengths[i]);
+      }
+      return field::segment_field(p, capsules[i], capsule_radii[i]) * capsule_strengths[i];
+    }
+    if (id < triangle_base) {
+      const uint32_t i = id - arc_base;
+      return field::arc_field(p, arcs[i], arc_radii[i]) * arc_strengths[i];
+    }
+    const uint32_t i = id - triangle_base;
+    const Group& g = group_of(i);
+    return field::triangle_field(p, triangles[i], g.radius) * g.strength;
+  }
+};
+
+}  // namespace convray::implicit

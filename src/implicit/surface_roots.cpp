@@ -1,0 +1,283 @@
+#include "implicit/surface_roots.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "implicit/bezier_clip.hpp"
+#include "implicit/interval_fit.hpp"
+#include "implicit/surface_impl.hpp"
+
+namespace convray::implicit {
+namespace {
+
+// A fit's error is estimated from the exact field at s = 1/8 and 7/8, where the interpolation
+// error of the 7 conditions peaks, times this safety factor.
+constexpr double kErrorSafety = 3.0;
+// Fits whose error estimate exceeds this fraction of T are split in two, at most kMaxSplits deep.
+constexpr double kFitTolerance = 1e-3;
+constexpr int kMaxSplits = 4;
+
+struct FitPiece {
+  double t0, t1;
+  Poly6 poly;           // power form in s = (t - t0) / (t1 - t0)
+  double error;         // bound on |fit - exact| over the piece
+  double lo, hi;        // bounds of the fit over the piece (its Bernstein hull)
+  uint32_t primitive;
+};
+
+class RayTracer {
+ public:
+  RayTracer(const ConvolutionSurface::Impl& s, const Ray& ray, TraceStats& stats)
+      : s_(s), ray_(ray), stats_(stats) {}
+
+  double value(uint32_t id, double t) {
+    ++stats_.field_evaluations;
+    return s_.value(id, ray_.at(t));
+  }
+  double slope(uint32_t id, double t) {
+    ++stats_.field_evaluations;
+    return glm::dot(s_.sample(id, ray_.at(t)).gradient, ray_.direction);
+  }
+
+  void fit_primitive(const accel::SupportInterval& iv, std::vector<FitPiece>& pieces);
+  void solve_cluster(std::span<const accel::SupportInterval> cluster, double tmin, double tmax,
+                     RootMode mode, std::vector<double>& out);
+
+ private:
+  void fit_recursive(uint32_t id, double t0, double t1, double v0, double g0, double v1,
+                     double g1, const double q[3], int depth, std::vector<FitPiece>& pieces);
+  double exact_minus_threshold(std::span<const uint32_t> ids, double t);
+  bool solve_region(std::span<const uint32_t> ids, double lo, double hi, double guess,
+                    double piece_lo, double piece_hi, RootMode mode, std::vector<double>& out);
+  double polish(std::span<const uint32_t> ids, double lo, double hi, double g_lo, double g_hi);
+
+  const ConvolutionSurface::Impl& s_;
+  const Ray& ray_;
+  TraceStats& stats_;
+};
+
+void RayTracer::fit_recursive(uint32_t id, double t0, double t1, double v0, double g0, double v1,
+                              double g1, const double q[3], int depth,
+                              std::vector<FitPiece>& pieces) {
+  const double width = t1 - t0;
+  FitPiece piece{t0, t1, fit_degree6({v0, g0, v1, g1, {q[0], q[1], q[2]}}, width), 0.0, 0.0,
+                 0.0, id};
+  ++stats_.fits;
+  const bool exact_kind = id < s_.capsule_base;  // spheres: the field is a quartic in t
+  double e1 = 0.0, e7 = 0.0;
+  if (!exact_kind) {
+    e1 = value(id, t0 + width / 8.0);
+    e7 = value(id, t0 + width * 7.0 / 8.0);
+    piece.error = kErrorSafety * std::max(std::abs(evaluate(piece.poly, 0.125) - e1),
+                                          std::abs(evaluate(piece.poly, 0.875) - e7));
+  }
+  if (piece.error > kFitTolerance * s_.threshold && depth < kMaxSplits) {
+    ++stats_.subdivisions;
+    const double mid = t0 + 0.5 * width;
+    const double g_mid = slope(id, mid);
+    const double left[3] = {e1, q[0], value(id, t0 + width * 3.0 / 8.0)};
+    const double right[3] = {value(id, t0 + width * 5.0 / 8.0), q[2], e7};
+    fit_recursive(id, t0, mid, v0, g0, q[1], g_mid, left, depth + 1, pieces);
+    fit_recursive(id, mid, t1, q[1], g_mid, v1, g1, right, depth + 1, pieces);
+    return;
+  }
+  Poly6 samples;
+  for (int k = 0; k < 7; ++k) samples[k] = evaluate(piece.poly, k / 6.0);
+  const Poly6 hull = bernstein_from_samples(samples);
+  piece.lo = *std::min_element(hull.begin(), hull.end());
+  piece.hi = *std::max_element(hull.begin(), hull.end());
+  pieces.push_back(piece);
+}
+
+// The whole support interval: value and slope vanish at both ends (Eqs. 13-16).
+void RayTracer::fit_primitive(const accel::SupportInterval& iv, std::vector<FitPiece>& pieces) {
+  const double width = iv.exit - iv.enter;
+  if (!(width > 0.0)) return;  // a tangent touch: the field is zero along the ray
+  const double q[3] = {value(iv.primitive, iv.enter + 0.25 * width),
+                       value(iv.primitive, iv.enter + 0.5 * width),
+                       value(iv.primitive, iv.enter + 0.75 * width)};
+  fit_recursive(iv.primitive, iv.enter, iv.exit, 0.0, 0.0, 0.0, 0.0, q, 0, pieces);
+}
+
+double RayTracer::exact_minus_threshold(std::span<const uint32_t> ids, double t) {
+  double sum = 0.0;
+  for (uint32_t id : ids) sum += value(id, t);
+  return sum - s_.threshold;
+}
+
+// Illinois regula falsi on a sign-changing bracket, with a bisection step whenever the
+// bracket fails to halve, until it is a few ulps wide or the field hits T exactly.
+double RayTracer::polish(std::span<const uint32_t> ids, double lo, double hi, double g_lo,
+                         double g_hi) {
+  ++stats_.roots;
+  int side = 0;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double width = hi - lo;
+    const double ulps = 8.0 * std::numeric_limits<double>::epsilon() *
+                        std::max(std::abs(lo), std::abs(hi));
+    if (width <= ulps) break;
+    double t = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+    if (iteration % 4 == 3 || !(t > lo && t < hi)) t = 0.5 * (lo + hi);
+    const double g = exact_minus_threshold(ids, t);
+    if (g == 0.0) return t;
+    if ((g < 0.0) == (g_lo < 0.0)) {
+      lo = t;
+      g_lo = g;
+      if (side == -1) g_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = t;
+      g_hi = g;
+      if (side == 1) g_lo *= 0.5;
+      side = 1;
+    }
+  }
+  return std::abs(g_lo) < std::abs(g_hi) ? lo : hi;
+}
+
+// A region from the band isolation may hold a crossing (the exact field changes sign across
+// it), a touching pair (it changes sign at the fit's closest approach), or nothing. When the
+// fit's error has pushed a crossing just outside the region, the bracket is widened, doubling,
+// within the piece [piece_lo, piece_hi] where the same primitives are active.
+bool RayTracer::solve_region(std::span<const uint32_t> ids, double lo, double hi, double guess,
+                             double piece_lo, double piece_hi, RootMode mode,
+                             std::vector<double>& out) {
+  auto push = [&](double t) {
+    if (out.empty() || t > out.back() + 1e-9 * s_.min_radius) out.push_back(t);
+    return mode != RootMode::all;
+  };
+  auto differ = [](double a, double b) { return (a < 0.0) != (b < 0.0); };
+  double g_lo = exact_minus_threshold(ids, lo);
+  if (g_lo == 0.0) return push(lo);
+  double g_hi = exact_minus_threshold(ids, hi);
+  if (differ(g_lo, g_hi)) return push(polish(ids, lo, hi, g_lo, g_hi));
+  const double g_mid = exact_minus_threshold(ids, guess);
+  if (differ(g_mid, g_lo)) {
+    if (push(polish(ids, lo, guess, g_lo, g_mid))) return true;
+    return push(polish(ids, guess, hi, g_mid, g_hi));
+  }
+  double width = std::max(hi - lo, 1e-3 * s_.min_radius);
+  for (int step = 0; step < 12 && (lo > piece_lo || hi < piece_hi); ++step, width *= 2.0) {
+    if (lo > piece_lo) {
+      const double t = std::max(piece_lo, lo - width);
+      const double g = exact_minus_threshold(ids, t);
+      if (differ(g, g_lo)) return push(polish(ids, t, lo, g, g_lo));
+      lo = t;
+      g_lo = g;
+    }
+    if (hi < piece_hi) {
+      const double t = std::min(piece_hi, hi + width);
+      const double g = exact_minus_threshold(ids, t);
+      if (differ(g, g_hi)) return push(polish(ids, hi, t, g_hi, g));
+      hi = t;
+      g_hi = g;
+    }
+  }
+  return false;
+}
+
+void RayTracer::solve_cluster(std::span<const accel::SupportInterval> cluster, double tmin,
+                              double tmax, RootMode mode, std::vector<double>& out) {
+  thread_local std::vector<FitPiece> pieces;
+  thread_local std::vector<double> breaks;
+  thread_local std::vector<const FitPiece*> active;
+  thread_local std::vector<uint32_t> ids;
+  thread_local std::vector<Region> regions;
+  pieces.clear();
+  for (const accel::SupportInterval& iv : cluster) fit_primitive(iv, pieces);
+  std::sort(pieces.begin(), pieces.end(),
+            [](const FitPiece& a, const FitPiece& b) { return a.t0 < b.t0; });
+  breaks.clear();
+  for (const FitPiece& p : pieces) {
+    breaks.push_back(std::clamp(p.t0, tmin, tmax));
+    breaks.push_back(std::clamp(p.t1, tmin, tmax));
+  }
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+
+  const double threshold = s_.threshold;
+  size_t next = 0;
+  active.clear();
+  for (size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double b0 = breaks[k], b1 = breaks[k + 1];
+    // Pieces covering [b0, b1]: those started by b0 and not ended by it.
+    while (next < pieces.size() && pieces[next].t0 <= b0) active.push_back(&pieces[next++]);
+    std::erase_if(active, [&](const FitPiece* p) { return p->t1 <= b0; });
+    double hi = 0.0, lo = 0.0, band = 0.0;
+    for (const FitPiece* p : active) {
+      hi += p->hi;
+      lo += p->lo;
+      band += p->error;
+    }
+    if (hi + band < threshold || lo - band > threshold) continue;  // no crossing possible
+
+    // The summed fit minus T on [b0, b1], in Bernstein form, its regions near zero.
+    Poly6 samples;
+    for (int j = 0; j < 7; ++j) {
+      const double t = b0 + (b1 - b0) * j / 6.0;
+      double sum = -threshold;
+      for (const FitPiece* p : active) sum += evaluate(p->poly, (t - p->t0) / (p->t1 - p->t0));
+      samples[j] = sum;
+    }
+    const Poly6 bernstein = bernstein_from_samples(samples);
+    regions.clear();
+    const double resolution = 1e-3 * s_.min_radius / (b1 - b0);
+    isolate_band(bernstein, band + 1e-12 * threshold, resolution, false, regions);
+    if (regions.empty()) continue;
+    ids.clear();
+    for (const FitPiece* p : active) ids.push_back(p->primitive);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    for (const Region& r : regions) {
+      // The fit's closest approach to T in the region: where a touching pair would straddle.
+      double guess = 0.5 * (r.lo + r.hi), best = std::numeric_limits<double>::infinity();
+      for (int j = 0; j <= 8; ++j) {
+        const double s = r.lo + (r.hi - r.lo) * j / 8.0;
+        double sum = -threshold;
+        const double t = b0 + (b1 - b0) * s;
+        for (const FitPiece* p : active) sum += evaluate(p->poly, (t - p->t0) / (p->t1 - p->t0));
+        if (std::abs(sum) < best) {
+          best = std::abs(sum);
+          guess = t;
+        }
+      }
+      const double lo_t = b0 + (b1 - b0) * r.lo, hi_t = b0 + (b1 - b0) * r.hi;
+      guess = std::clamp(guess, lo_t, hi_t);
+      if (solve_region(ids, lo_t, hi_t, guess, b0, b1, mode, out) && mode != RootMode::all) return;
+    }
+  }
+}
+
+}  // namespace
+
+void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
+                RootMode mode, std::vector<double>& out, TraceStats& stats) {
+  thread_local std::vector<accel::SupportInterval> intervals;
+  intervals.clear();
+  ++stats.rays;
+  surface.index->intersect(ray.origin, ray.direction, tmin, tmax, intervals);
+  // Fit each support's crossing whole: its ends are the zeros the paper's fit relies on.
+  stats.primitives += intervals.size();
+  if (intervals.empty()) return;
+  std::sort(intervals.begin(), intervals.end(),
+            [](const auto& a, const auto& b) { return a.enter < b.enter; });
+  RayTracer tracer(surface, ray, stats);
+  // Clusters of overlapping supports: between them the field is zero, below T > 0.
+  size_t begin = 0;
+  while (begin < intervals.size()) {
+    double reach = intervals[begin].exit;
+    size_t end = begin + 1;
+    while (end < intervals.size() && intervals[end].enter <= reach) {
+      reach = std::max(reach, intervals[end].exit);
+      ++end;
+    }
+    if (intervals[begin].enter > tmax) break;
+    const size_t found = out.size();
+    if (reach >= tmin) tracer.solve_cluster(std::span(intervals).subspan(begin, end - begin), tmin, tmax, mode, out);
+    if (mode != RootMode::all && out.size() > found) return;
+    begin = end;
+  }
+}
+
+}  // namespace convray::implicit

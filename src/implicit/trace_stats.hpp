@@ -1,0 +1,29 @@
+#pragma once
+// Counters of the work done while tracing, kept per thread and summed at the end, so that
+// `--stats` can say where the time goes without slowing the tracer down.
+#include <cstdint>
+
+namespace convray::implicit {
+
+struct TraceStats {
+  uint64_t rays = 0;               // surface queries (camera and shadow rays)
+  uint64_t primitives = 0;         // support intervals gathered (primitives crossed)
+  uint64_t fits = 0;               // per-primitive degree-6 fits built
+  uint64_t subdivisions = 0;       // fits split because their error bound was too large
+  uint64_t field_evaluations = 0;  // exact per-primitive field evaluations
+  uint64_t roots = 0;              // roots found and polished on the exact field
+  uint64_t fallbacks = 0;          // rays where the fast path handed over to exact tracing
+
+  TraceStats& operator+=(const TraceStats& o) {
+    rays += o.rays;
+    primitives += o.primitives;
+    fits += o.fits;
+    subdivisions += o.subdivisions;
+    field_evaluations += o.field_evaluations;
+    roots += o.roots;
+    fallbacks += o.fallbacks;
+    return *this;
+  }
+};
+
+}  // namespace convray::implicit

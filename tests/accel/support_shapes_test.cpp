@@ -1,0 +1,153 @@
+// Supports against brute force: distances against dense sampling of the skeleton, and each
+// span's ends against the distance function along the line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "accel/support_shapes.hpp"
+
+namespace convray::accel {
+namespace {
+
+Vec3 random_point(std::mt19937_64& rng, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  return {u(rng), u(rng), u(rng)};
+}
+
+Vec3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> n;
+  return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+}
+
+field::Arc random_arc(std::mt19937_64& rng) {
+  field::Arc arc;
+  arc.center = random_point(rng, 0.5);
+  arc.axis = random_unit(rng);
+  arc.start = glm::normalize(glm::cross(arc.axis, random_unit(rng)));
+  std::uniform_real_distribution<double> u(0.2, 1.0);
+  arc.radius = u(rng);
+  arc.angle = 2.0 * kPi * u(rng);
+  return arc;
+}
+
+// Squared distance to the skeleton by sampling it densely (an upper bound that converges).
+double sampled_distance2(const Vec3& p, const field::Triangle& t) {
+  double best = INFINITY;
+  const int n = 200;
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; i + j <= n; ++j) {
+      const Vec3 q = t.a + (double(i) / n) * (t.b - t.a) + (double(j) / n) * (t.c - t.a);
+      best = std::min(best, glm::dot(p - q, p - q));
+    }
+  }
+  return best;
+}
+
+double sampled_distance2(const Vec3& p, const field::Arc& arc) {
+  double best = INFINITY;
+  for (int i = 0; i <= 20000; ++i) {
+    const Vec3 q = arc.point_at(arc.angle * i / 20000.0);
+    best = std::min(best, glm::dot(p - q, p - q));
+  }
+  return best;
+}
+
+TEST(SupportShapes, TriangleDistanceMatchesDenseSampling) {
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 200; ++trial) {
+    const field::Triangle t{random_point(rng, 1), random_point(rng, 1), random_point(rng, 1)};
+    const Vec3 p = random_point(rng, 1.5);
+    const double exact = std::sqrt(distance2_to_triangle(p, t));
+    const double sampled = std::sqrt(sampled_distance2(p, t));
+    // The grid step is about 2 * 1.7 / 200: sampling overestimates by at most that.
+    EXPECT_LE(exact, sampled + 1e-12);
+    EXPECT_NEAR(exact, sampled, 0.02) << trial;
+  }
+}
+
+TEST(SupportShapes, ArcDistanceMatchesDenseSampling) {
+  std::mt19937_64 rng(12);
+  for (int trial = 0; trial < 300; ++trial) {
+    const field::Arc arc = random_arc(rng);
+    const Vec3 p = random_point(rng, 1.5);
+    const double exact = std::sqrt(distance2_to_arc(p, arc));
+    const double sampled = std::sqrt(sampled_distance2(p, arc));
+    EXPECT_LE(exact, sampled + 1e-12);
+    EXPECT_NEAR(exact, sampled, 1e-3) << trial;
+  }
+}
+
+// Along the line, inside the span the distance is below R, at its ends it equals R, and a
+// step outside it exceeds R; a line that misses has distance > R everywhere sampled.
+template <class Distance2>
+void check_span(const Span& span, const Vec3& o, const Vec3& d, double r, Distance2 distance2) {
+  if (span.empty()) {
+    for (int i = -4000; i <= 4000; ++i) {
+      ASSERT_GT(distance2(o + (i * 1e-3) * d), r * r * (1 - 1e-9));
+    }
+    return;
+  }
+  EXPECT_NEAR(std::sqrt(distance2(o + span.enter * d)), r, 1e-9);
+  EXPECT_NEAR(std::sqrt(distance2(o + span.exit * d)), r, 1e-9);
+  for (int i = 1; i < 100; ++i) {
+    const double t = span.enter + (span.exit - span.enter) * i / 100.0;
+    EXPECT_LE(distance2(o + t * d), r * r * (1 + 1e-9));
+  }
+  EXPECT_GT(distance2(o + (span.enter - 1e-6) * d), r * r);
+  EXPECT_GT(distance2(o + (span.exit + 1e-6) * d), r * r);
+}
+
+TEST(SupportShapes, SpansAreExactForSpheresCapsulesAndTriangles) {
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> radius(0.05, 0.8);
+  int hits = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const Vec3 o = random_point(rng, 2.0), d = random_unit(rng);
+    const double r = radius(rng);
+    const Vec3 c = random_point(rng, 1.0);
+    const field::Segment s{random_point(rng, 1), random_point(rng, 1)};
+    const field::Triangle t{random_point(rng, 1), random_point(rng, 1), random_point(rng, 1)};
+    const Span a = sphere_span(o, d, c, r), b = capsule_span(o, d, s, r), e = triangle_span(o, d, t, r);
+    hits += !a.empty() + !b.empty() + !e.empty();
+    check_span(a, o, d, r, [&](const Vec3& p) { return glm::dot(p - c, p - c); });
+    check_span(b, o, d, r, [&](const Vec3& p) { return distance2_to_segment(p, s); });
+    check_span(e, o, d, r, [&](const Vec3& p) { return distance2_to_triangle(p, t); });
+  }
+  EXPECT_GT(hits, 150);  // both outcomes are exercised
+}
+
+TEST(SupportShapes, ArcSpanHoldsTheWholeCrossing) {
+  std::mt19937_64 rng(14);
+  for (int trial = 0; trial < 300; ++trial) {
+    const field::Arc arc = random_arc(rng);
+    const Vec3 o = random_point(rng, 2.0), d = random_unit(rng);
+    const double r = 0.3;
+    const Span span = arc_span(o, d, arc, r);
+    for (int i = -4000; i <= 4000; ++i) {
+      const double t = i * 1e-3;
+      if (distance2_to_arc(o + t * d, arc) < r * r) {
+        ASSERT_FALSE(span.empty()) << trial;
+        ASSERT_GE(t, span.enter);
+        ASSERT_LE(t, span.exit);
+      }
+    }
+  }
+}
+
+TEST(SupportShapes, DegenerateTrianglesAndSegmentsAreCapsules) {
+  const field::Triangle flat{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  const Span span = triangle_span({1, -5, 0.0}, {0, 1, 0}, flat, 0.5);
+  EXPECT_NEAR(span.enter, 4.5, 1e-12);
+  EXPECT_NEAR(span.exit, 5.5, 1e-12);
+  const Span point = capsule_span({0, -5, 0}, {0, 1, 0}, {{0, 0, 0}, {0, 0, 0}}, 1.0);
+  EXPECT_NEAR(point.enter, 4.0, 1e-12);
+  EXPECT_NEAR(point.exit, 6.0, 1e-12);
+  // A line along the capsule's axis.
+  const Span along = capsule_span({-3, 0, 0}, {1, 0, 0}, {{0, 0, 0}, {2, 0, 0}}, 0.5);
+  EXPECT_NEAR(along.enter, 2.5, 1e-12);
+  EXPECT_NEAR(along.exit, 5.5, 1e-12);
+}
+
+}  // namespace
+}  // namespace convray::accel

@@ -1,0 +1,173 @@
+// The surface finder against analytic surfaces (a point's sphere, a big triangle's offset
+// plane) and against the exact reference tracer on random skeletons of every kind.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "implicit/convolution_surface.hpp"
+#include "implicit/reference_tracer.hpp"
+#include "implicit/threshold.hpp"
+
+namespace convray::implicit {
+namespace {
+
+Vec3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> n;
+  return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+}
+
+// One point of radius R: (1 - d^2/R^2)^2 = T is the sphere d = R sqrt(1 - sqrt(T)).
+TEST(ConvolutionSurface, SinglePointIsASphereOfKnownRadius) {
+  ConvolutionObject object;
+  const double R = 2.0, T = 0.3;
+  object.points.push_back({{1, 2, 3}, {1.0, R}});
+  object.threshold = T;
+  const ConvolutionSurface surface(object);
+  const double radius = R * std::sqrt(1.0 - std::sqrt(T));
+  std::mt19937_64 rng(31);
+  TraceStats stats;
+  for (int i = 0; i < 500; ++i) {
+    const Vec3 origin = Vec3(1, 2, 3) + 6.0 * random_unit(rng);
+    const Vec3 aim = Vec3(1, 2, 3) + 1.2 * radius * random_unit(rng);
+    const Ray ray{origin, glm::normalize(aim - origin)};
+    // Analytic intersections with the sphere.
+    const Vec3 w = origin - Vec3(1, 2, 3);
+    const double b = glm::dot(w, ray.direction), c = glm::dot(w, w) - radius * radius;
+    const double disc = b * b - c;
+    std::vector<double> roots;
+    surface.roots(ray, 0.0, INFINITY, roots, stats);
+    if (disc <= 1e-9) {
+      EXPECT_TRUE(roots.empty()) << i;
+      continue;
+    }
+    ASSERT_EQ(roots.size(), 2u) << i;
+    EXPECT_NEAR(roots[0], -b - std::sqrt(disc), 1e-12 * R);
+    EXPECT_NEAR(roots[1], -b + std::sqrt(disc), 1e-12 * R);
+    const auto hit = surface.first_hit(ray, 0.0, INFINITY, stats);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(glm::length(hit->normal - glm::normalize(hit->point - Vec3(1, 2, 3))), 0.0, 1e-9);
+  }
+}
+
+// A triangle much larger than R: away from its edges the surface is the plane at the offset.
+TEST(ConvolutionSurface, LargeTriangleGivesThePlaneAtTheOffset) {
+  ConvolutionObject object;
+  const double R = 1.0, offset = 0.4;
+  object.meshes.push_back({{{{-100, -100, 0}, {100, -100, 0}, {0, 100, 0}}}, {1.0, R}});
+  object.threshold = threshold_for_offset(1.0, R, offset);
+  const ConvolutionSurface surface(object);
+  std::mt19937_64 rng(32);
+  std::uniform_real_distribution<double> u(-20, 20);
+  TraceStats stats;
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 origin(u(rng), u(rng), 30.0);
+    const Vec3 target(u(rng), u(rng), 0.0);
+    const Ray ray{origin, glm::normalize(target - origin)};
+    std::vector<double> roots;
+    surface.roots(ray, 0.0, INFINITY, roots, stats);
+    ASSERT_EQ(roots.size(), 2u) << i;
+    // Planes z = +offset and z = -offset.
+    EXPECT_NEAR(roots[0], (30.0 - offset) / -ray.direction.z, 1e-9 * R);
+    EXPECT_NEAR(roots[1], (30.0 + offset) / -ray.direction.z, 1e-9 * R);
+    const auto hit = surface.first_hit(ray, 0.0, INFINITY, stats);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->normal.z, 1.0, 1e-9);
+  }
+}
+
+// Random skeletons of every kind, negative strengths included, traced from random rays by
+// the fast path and by the reference tracer: the same hits and misses, the same distances.
+ConvolutionObject random_skeleton(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.5, 1.5), r(0.4, 0.9), s(0.5, 1.5);
+  auto point = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  ConvolutionObject o;
+  for (int i = 0; i < 4; ++i) o.points.push_back({point(), {s(rng), r(rng)}});
+  for (int i = 0; i < 3; ++i) o.segments.push_back({{point(), point()}, {s(rng), r(rng)}});
+  for (int i = 0; i < 2; ++i) {
+    field::Arc arc;
+    if (field::arc_through(point(), point(), point(), arc)) o.arcs.push_back({arc, {s(rng), r(rng)}});
+  }
+  MeshComponent mesh;
+  for (int i = 0; i < 6; ++i) mesh.triangles.push_back({point(), point(), point()});
+  mesh.weight = {1.0, 0.6};
+  o.meshes.push_back(mesh);
+  o.blob_spheres.push_back({point(), {2.0, 0.8}});
+  o.blob_cylinders.push_back({point(), point(), {1.5, 0.5}});
+  o.points.push_back({point(), {-1.0, 0.7}});  // subtracts
+  o.threshold = 0.3;
+  return o;
+}
+
+TEST(ConvolutionSurface, AgreesWithTheReferenceTracerOnRandomSkeletons) {
+  std::mt19937_64 rng(33);
+  int rays = 0, disagreements = 0, hits = 0;
+  double worst = 0.0;
+  TraceStats stats;
+  for (int scene = 0; scene < 12; ++scene) {
+    const ConvolutionSurface surface(random_skeleton(rng));
+    const double R = 0.4;  // the smallest radius used
+    for (int i = 0; i < 250; ++i) {
+      const Vec3 origin = 5.0 * random_unit(rng);
+      const Vec3 aim = 1.2 * random_unit(rng);
+      const Ray ray{origin, glm::normalize(aim - origin)};
+      const auto fast = surface.first_hit(ray, 0.0, INFINITY, stats);
+      const auto exact = reference_first_hit(surface, ray, 0.0, INFINITY, stats);
+      ++rays;
+      if (fast.has_value() != exact.has_value()) {
+        ++disagreements;
+        continue;
+      }
+      if (!fast) continue;
+      ++hits;
+      worst = std::max(worst, std::abs(fast->t - exact->t) / R);
+    }
+  }
+  RecordProperty("worst_distance_over_R", std::to_string(worst));
+  std::printf("rays %d, hits %d, hit/miss disagreements %d, worst |dt|/R %.3g\n", rays, hits,
+              disagreements, worst);
+  EXPECT_GT(hits, rays / 5);
+  EXPECT_LE(disagreements, rays * 5 / 10000 + 1);  // 0.05 % (one allowed in 3,000)
+  EXPECT_LE(worst, 1e-6);
+}
+
+// Every root of roots() is a crossing of the exact field, and F at its sides differs in sign.
+TEST(ConvolutionSurface, AllRootsArePolishedCrossings) {
+  std::mt19937_64 rng(34);
+  TraceStats stats;
+  int checked = 0;
+  for (int scene = 0; scene < 6; ++scene) {
+    const ConvolutionSurface surface(random_skeleton(rng));
+    for (int i = 0; i < 100; ++i) {
+      const Vec3 origin = 5.0 * random_unit(rng);
+      const Ray ray{origin, glm::normalize(random_unit(rng) - origin)};
+      std::vector<double> roots, reference;
+      surface.roots(ray, 0.0, INFINITY, roots, stats);
+      reference_roots(surface, ray, 0.0, INFINITY, reference, stats);
+      EXPECT_EQ(roots.size(), reference.size());
+      for (size_t k = 0; k < std::min(roots.size(), reference.size()); ++k) {
+        EXPECT_NEAR(roots[k], reference[k], 1e-6 * 0.4);
+      }
+      for (double t : roots) {
+        const double step = 1e-9;
+        const double before = surface.field(ray.at(t - step)).value - surface.threshold();
+        const double after = surface.field(ray.at(t + step)).value - surface.threshold();
+        EXPECT_LE(before * after, 0.0);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(ConvolutionSurface, RejectsBadThresholdsAndWeights) {
+  ConvolutionObject o;
+  o.threshold = 0.0;
+  EXPECT_THROW(ConvolutionSurface{o}, std::invalid_argument);
+  o.threshold = 1.0;
+  o.points.push_back({{0, 0, 0}, {1.0, -1.0}});
+  EXPECT_THROW(ConvolutionSurface{o}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace convray::implicit
