@@ -43,6 +43,8 @@ class RayTracer {
   void fit_primitive(const accel::SupportInterval& iv, std::vector<FitPiece>& pieces);
   void solve_cluster(std::span<const accel::SupportInterval> cluster, double tmin, double tmax,
                      RootMode mode, std::vector<double>& out);
+  bool solve_piece(std::span<const FitPiece* const> active, double b0, double b1, RootMode mode,
+                   std::vector<double>& out);
 
  private:
   void fit_recursive(uint32_t id, double t0, double t1, double v0, double g0, double v1,
@@ -177,74 +179,91 @@ bool RayTracer::solve_region(std::span<const uint32_t> ids, double lo, double hi
   return false;
 }
 
+// The fits summed over [b0, b1], where the same pieces are active: bounds first (most pieces
+// are far from T), then the Bernstein form and its regions near zero, each solved exactly.
+bool RayTracer::solve_piece(std::span<const FitPiece* const> active, double b0, double b1,
+                            RootMode mode, std::vector<double>& out) {
+  thread_local std::vector<uint32_t> ids;
+  thread_local std::vector<Region> regions;
+  const double threshold = s_.threshold;
+  double hi = 0.0, lo = 0.0, band = 0.0;
+  for (const FitPiece* p : active) {
+    hi += p->hi;
+    lo += p->lo;
+    band += p->error;
+  }
+  if (hi + band < threshold || lo - band > threshold) return false;  // no crossing possible
+  auto fit_minus_threshold = [&](double t) {
+    double sum = -threshold;
+    for (const FitPiece* p : active) sum += evaluate(p->poly, (t - p->t0) / (p->t1 - p->t0));
+    return sum;
+  };
+  Poly6 samples;
+  for (int j = 0; j < 7; ++j) samples[j] = fit_minus_threshold(b0 + (b1 - b0) * j / 6.0);
+  regions.clear();
+  const double resolution = 1e-3 * s_.min_radius / (b1 - b0);
+  isolate_band(bernstein_from_samples(samples), band + 1e-12 * threshold, resolution, false,
+               regions);
+  if (regions.empty()) return false;
+  ids.clear();
+  for (const FitPiece* p : active) ids.push_back(p->primitive);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  for (const Region& r : regions) {
+    const double lo_t = b0 + (b1 - b0) * r.lo, hi_t = b0 + (b1 - b0) * r.hi;
+    // The fit's closest approach to T in the region: where a touching pair would straddle.
+    double guess = 0.5 * (lo_t + hi_t), best = std::numeric_limits<double>::infinity();
+    for (int j = 0; j <= 8; ++j) {
+      const double t = lo_t + (hi_t - lo_t) * j / 8.0;
+      const double g = std::abs(fit_minus_threshold(t));
+      if (g < best) {
+        best = g;
+        guess = t;
+      }
+    }
+    if (solve_region(ids, lo_t, hi_t, guess, b0, b1, mode, out) && mode != RootMode::all) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Sweeps the cluster from its start, fitting each primitive only when the sweep reaches its
+// support, so that the search for a first root stops fitting where it finds one.
 void RayTracer::solve_cluster(std::span<const accel::SupportInterval> cluster, double tmin,
                               double tmax, RootMode mode, std::vector<double>& out) {
   thread_local std::vector<FitPiece> pieces;
-  thread_local std::vector<double> breaks;
   thread_local std::vector<const FitPiece*> active;
-  thread_local std::vector<uint32_t> ids;
-  thread_local std::vector<Region> regions;
   pieces.clear();
-  for (const accel::SupportInterval& iv : cluster) fit_primitive(iv, pieces);
-  std::sort(pieces.begin(), pieces.end(),
-            [](const FitPiece& a, const FitPiece& b) { return a.t0 < b.t0; });
-  breaks.clear();
-  for (const FitPiece& p : pieces) {
-    breaks.push_back(std::clamp(p.t0, tmin, tmax));
-    breaks.push_back(std::clamp(p.t1, tmin, tmax));
-  }
-  std::sort(breaks.begin(), breaks.end());
-  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-
-  const double threshold = s_.threshold;
-  size_t next = 0;
-  active.clear();
-  for (size_t k = 0; k + 1 < breaks.size(); ++k) {
-    const double b0 = breaks[k], b1 = breaks[k + 1];
-    // Pieces covering [b0, b1]: those started by b0 and not ended by it.
-    while (next < pieces.size() && pieces[next].t0 <= b0) active.push_back(&pieces[next++]);
-    std::erase_if(active, [&](const FitPiece* p) { return p->t1 <= b0; });
-    double hi = 0.0, lo = 0.0, band = 0.0;
-    for (const FitPiece* p : active) {
-      hi += p->hi;
-      lo += p->lo;
-      band += p->error;
+  double end = tmax;
+  size_t next = 0;  // the next primitive to fit (cluster is sorted by entry)
+  double reach = -std::numeric_limits<double>::infinity();
+  for (const auto& iv : cluster) reach = std::max(reach, iv.exit);
+  end = std::min(end, reach);
+  double cursor = std::max(tmin, cluster.front().enter);
+  while (cursor < end) {
+    while (next < cluster.size() && cluster[next].enter <= cursor) {
+      fit_primitive(cluster[next++], pieces);
     }
-    if (hi + band < threshold || lo - band > threshold) continue;  // no crossing possible
-
-    // The summed fit minus T on [b0, b1], in Bernstein form, its regions near zero.
-    Poly6 samples;
-    for (int j = 0; j < 7; ++j) {
-      const double t = b0 + (b1 - b0) * j / 6.0;
-      double sum = -threshold;
-      for (const FitPiece* p : active) sum += evaluate(p->poly, (t - p->t0) / (p->t1 - p->t0));
-      samples[j] = sum;
-    }
-    const Poly6 bernstein = bernstein_from_samples(samples);
-    regions.clear();
-    const double resolution = 1e-3 * s_.min_radius / (b1 - b0);
-    isolate_band(bernstein, band + 1e-12 * threshold, resolution, false, regions);
-    if (regions.empty()) continue;
-    ids.clear();
-    for (const FitPiece* p : active) ids.push_back(p->primitive);
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    for (const Region& r : regions) {
-      // The fit's closest approach to T in the region: where a touching pair would straddle.
-      double guess = 0.5 * (r.lo + r.hi), best = std::numeric_limits<double>::infinity();
-      for (int j = 0; j <= 8; ++j) {
-        const double s = r.lo + (r.hi - r.lo) * j / 8.0;
-        double sum = -threshold;
-        const double t = b0 + (b1 - b0) * s;
-        for (const FitPiece* p : active) sum += evaluate(p->poly, (t - p->t0) / (p->t1 - p->t0));
-        if (std::abs(sum) < best) {
-          best = std::abs(sum);
-          guess = t;
-        }
+    // Pieces covering [cursor, b1]; b1 is the nearest start or end of any piece or primitive.
+    active.clear();
+    double b1 = next < cluster.size() ? cluster[next].enter : end;
+    for (const FitPiece& p : pieces) {
+      if (p.t1 <= cursor) continue;
+      if (p.t0 > cursor) {
+        b1 = std::min(b1, p.t0);
+        continue;
       }
-      const double lo_t = b0 + (b1 - b0) * r.lo, hi_t = b0 + (b1 - b0) * r.hi;
-      guess = std::clamp(guess, lo_t, hi_t);
-      if (solve_region(ids, lo_t, hi_t, guess, b0, b1, mode, out) && mode != RootMode::all) return;
+      active.push_back(&p);
+      b1 = std::min(b1, p.t1);
+    }
+    b1 = std::min(b1, end);
+    if (b1 <= cursor) break;
+    if (!active.empty() && solve_piece(active, cursor, b1, mode, out)) return;
+    cursor = b1;
+    // Drop finished pieces now and then, so the scan stays short on long clusters.
+    if (pieces.size() > 64) {
+      std::erase_if(pieces, [&](const FitPiece& p) { return p.t1 <= cursor; });
     }
   }
 }
