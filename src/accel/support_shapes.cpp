@@ -85,6 +85,12 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius) {
   const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
+  // Cheap rejection: the ball around the centroid holding the triangle, grown by R.
+  const Vec3 centroid = (triangle.a + triangle.b + triangle.c) / 3.0;
+  double reach2 = 0.0;
+  for (const Vec3& v : vertex) reach2 = std::max(reach2, glm::dot(v - centroid, v - centroid));
+  const double reach = std::sqrt(reach2) + radius;
+  if (sphere_span(origin, direction, centroid, reach).empty()) return {};
   Vec3 n = triangle_normal(triangle);
   const double n_length = glm::length(n);
   Span span{};

@@ -16,7 +16,9 @@ struct TriangleBatch::Accumulator {
   double* per_triangle = nullptr;  // when set, each triangle's value lands here
 };
 
-TriangleBatch::TriangleBatch(std::span<const Triangle> triangles) {
+TriangleBatch::TriangleBatch(std::span<const Triangle> triangles) { assign(triangles); }
+
+void TriangleBatch::assign(std::span<const Triangle> triangles) {
   const size_t n = triangles.size();
   for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->assign(n, 0.0);
   for (EdgeArrays& e : edges_) {

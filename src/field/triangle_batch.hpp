@@ -21,6 +21,8 @@ class TriangleBatch {
  public:
   TriangleBatch() = default;
   explicit TriangleBatch(std::span<const Triangle> triangles);
+  // Replaces the triangles, reusing the arrays' storage (for small batches built per query).
+  void assign(std::span<const Triangle> triangles);
 
   size_t size() const { return weight_.size(); }
 

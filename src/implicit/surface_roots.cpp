@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "field/triangle_batch.hpp"
 #include "implicit/bezier_clip.hpp"
 #include "implicit/interval_fit.hpp"
 #include "implicit/surface_impl.hpp"
@@ -24,6 +25,34 @@ struct FitPiece {
   double error;         // bound on |fit - exact| over the piece
   double lo, hi;        // bounds of the fit over the piece (its Bernstein hull)
   uint32_t primitive;
+};
+
+// The exact field of a fixed set of primitives along the ray: the triangles of one mesh in a
+// SIMD batch (the polish evaluates the same set many times), the rest one by one.
+struct ExactSum {
+  field::TriangleBatch batch;
+  std::vector<field::Triangle> batch_triangles;
+  double batch_radius = 1.0, batch_strength = 0.0;
+  std::vector<uint32_t> others;
+
+  void assign(const ConvolutionSurface::Impl& s, std::span<const uint32_t> ids) {
+    batch_triangles.clear();
+    others.clear();
+    const ConvolutionSurface::Impl::Group* group = nullptr;
+    for (uint32_t id : ids) {
+      if (id >= s.triangle_base) {
+        const auto& g = s.group_of(id - s.triangle_base);
+        if (!group) group = &g;
+        if (group == &g) {
+          batch_triangles.push_back(s.triangles[id - s.triangle_base]);
+          continue;
+        }
+      }
+      others.push_back(id);
+    }
+    batch.assign(batch_triangles);
+    if (group) batch_radius = group->radius, batch_strength = group->strength;
+  }
 };
 
 class RayTracer {
@@ -49,10 +78,10 @@ class RayTracer {
  private:
   void fit_recursive(uint32_t id, double t0, double t1, double v0, double g0, double v1,
                      double g1, const double q[3], int depth, std::vector<FitPiece>& pieces);
-  double exact_minus_threshold(std::span<const uint32_t> ids, double t);
-  bool solve_region(std::span<const uint32_t> ids, double lo, double hi, double guess,
-                    double piece_lo, double piece_hi, RootMode mode, std::vector<double>& out);
-  double polish(std::span<const uint32_t> ids, double lo, double hi, double g_lo, double g_hi);
+  double exact_minus_threshold(const ExactSum& exact, double t);
+  bool solve_region(const ExactSum& ids, double lo, double hi, double guess, double piece_lo,
+                    double piece_hi, RootMode mode, std::vector<double>& out);
+  double polish(const ExactSum& ids, double lo, double hi, double g_lo, double g_hi);
 
   const ConvolutionSurface::Impl& s_;
   const Ray& ray_;
@@ -102,15 +131,19 @@ void RayTracer::fit_primitive(const accel::SupportInterval& iv, std::vector<FitP
   fit_recursive(iv.primitive, iv.enter, iv.exit, 0.0, 0.0, 0.0, 0.0, q, 0, pieces);
 }
 
-double RayTracer::exact_minus_threshold(std::span<const uint32_t> ids, double t) {
+double RayTracer::exact_minus_threshold(const ExactSum& exact, double t) {
   double sum = 0.0;
-  for (uint32_t id : ids) sum += value(id, t);
+  for (uint32_t id : exact.others) sum += value(id, t);
+  if (!exact.batch_triangles.empty()) {
+    stats_.field_evaluations += exact.batch_triangles.size();
+    sum += exact.batch_strength * exact.batch.value(ray_.at(t), exact.batch_radius);
+  }
   return sum - s_.threshold;
 }
 
 // Illinois regula falsi on a sign-changing bracket, with a bisection step whenever the
 // bracket fails to halve, until it is a few ulps wide or the field hits T exactly.
-double RayTracer::polish(std::span<const uint32_t> ids, double lo, double hi, double g_lo,
+double RayTracer::polish(const ExactSum& ids, double lo, double hi, double g_lo,
                          double g_hi) {
   ++stats_.roots;
   int side = 0;
@@ -142,7 +175,7 @@ double RayTracer::polish(std::span<const uint32_t> ids, double lo, double hi, do
 // it), a touching pair (it changes sign at the fit's closest approach), or nothing. When the
 // fit's error has pushed a crossing just outside the region, the bracket is widened, doubling,
 // within the piece [piece_lo, piece_hi] where the same primitives are active.
-bool RayTracer::solve_region(std::span<const uint32_t> ids, double lo, double hi, double guess,
+bool RayTracer::solve_region(const ExactSum& ids, double lo, double hi, double guess,
                              double piece_lo, double piece_hi, RootMode mode,
                              std::vector<double>& out) {
   auto push = [&](double t) {
@@ -209,6 +242,8 @@ bool RayTracer::solve_piece(std::span<const FitPiece* const> active, double b0, 
   for (const FitPiece* p : active) ids.push_back(p->primitive);
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  thread_local ExactSum exact;
+  exact.assign(s_, ids);
   for (const Region& r : regions) {
     const double lo_t = b0 + (b1 - b0) * r.lo, hi_t = b0 + (b1 - b0) * r.hi;
     // The fit's closest approach to T in the region: where a touching pair would straddle.
@@ -221,7 +256,7 @@ bool RayTracer::solve_piece(std::span<const FitPiece* const> active, double b0, 
         guess = t;
       }
     }
-    if (solve_region(ids, lo_t, hi_t, guess, b0, b1, mode, out) && mode != RootMode::all) {
+    if (solve_region(exact, lo_t, hi_t, guess, b0, b1, mode, out) && mode != RootMode::all) {
       return true;
     }
   }
