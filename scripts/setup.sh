@@ -19,6 +19,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   libgtest-dev libbenchmark-dev
   clang libclang-rt-dev
+  povray povray-examples time  # reference renders and timings (bench/, comparison scripts)
 )
 missing=()
 for p in "${packages[@]}"; do
