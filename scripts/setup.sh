@@ -43,7 +43,7 @@ if [ "$mode" = test ]; then
   exit 0
 fi
 
-echo "==> default job: report the example soup, sample its field, picture a slice"
+echo "==> default job: report the example soup, sample its field, picture a slice, render it"
 mesh=scenes/models/soup.obj
 ./build/convray info "$mesh"
 echo "field at three points on and near the shell (F dF/dx dF/dy dF/dz), radius 0.25:"
@@ -51,4 +51,5 @@ printf '1 0 0\n0 0.95 0.2\n0 0 1.15\n' | ./build/convray field --mesh "$mesh" --
 mkdir -p out
 ./build/convray slice "$mesh" --radius 0.25 --offset 0.1 --axis z --at 0 --size 800x600 \
   -o out/slice.png
-echo "==> wrote out/slice.png"
+./build/convray quick "$mesh" --radius 0.25 --offset 0.1 --size 800x600 -o out/quick.png
+echo "==> wrote out/slice.png and out/quick.png"

@@ -34,14 +34,11 @@ void print_topology(const mesh::MeshStats& stats, std::ostream& out) {
       << "connected components: " << stats.connected_components << "\n";
 }
 
-// The kernel's radius R sets how far each triangle's influence reaches: about an edge length
-// keeps the surface close to the triangles, while a sizeable fraction of the model melts it
-// into a blob. So the advice is the smaller of the mean edge length and a tenth of the
-// model's largest dimension.
+// The advice of mesh::advised_radius, with its two ingredients.
 void print_radius_advice(const mesh::MeshStats& stats, std::ostream& out) {
   Vec3 size = stats.bounds.extent();
   double largest = std::max({size.x, size.y, size.z});
-  double start = std::min(stats.mean_edge_length, largest / 10);
+  double start = mesh::advised_radius(stats);
   out << "radius advice: start with R = " << number(start) << " (the smaller of the mean edge length, "
       << number(stats.mean_edge_length) << ", and a tenth of the largest dimension, " << number(largest)
       << "); larger radii blur the shape\n";

@@ -4,17 +4,17 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <ostream>
+#include <span>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <tbb/parallel_for.h>
 
 #include "app/soup_triangles.hpp"
 #include "implicit/mesh_field.hpp"
 #include "implicit/threshold.hpp"
 #include "mesh/load.hpp"
+#include "render/image_file.hpp"
 #include "util/error.hpp"
 
 namespace convray::app {
@@ -85,29 +85,11 @@ void draw_cross_section(const std::vector<field::Triangle>& triangles, const Pla
   }
 }
 
-void write_image_atomically(const std::string& path, int w, int h, const std::vector<Rgb>& rgb) {
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  // Keep the extension so OpenImageIO picks the same format for the temporary file.
-  std::string partial_name = ".";
-  partial_name.append(target.stem().string()).append(".partial").append(target.extension().string());
-  const fs::path partial = target.parent_path() / partial_name;
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw InputError({path}, "cannot write this image format: " + OIIO::geterror());
-  const OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::UINT8);
-  if (!out->open(partial.string(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) ||
-      !out->close()) {
-    std::error_code ignored;
-    fs::remove(partial, ignored);
-    throw InputError({path}, "cannot write image: " + out->geterror());
-  }
-  fs::rename(partial, target);
-}
-
 }  // namespace
 
 int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
   try {
+    render::check_image_destination(o.output);  // before the work, not after it
     if (o.offset && !(*o.offset >= 0.0 && *o.offset < o.radius)) {
       throw InputError({"command line"}, "--offset must satisfy 0 <= offset < radius");
     }
@@ -136,7 +118,11 @@ int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
       }
     }
     draw_cross_section(field.triangles(), frame, o.width, o.height, image);
-    write_image_atomically(o.output, o.width, o.height, image);
+    // The ramp's colours are meant for display as they are: no sRGB encoding on top.
+    static_assert(sizeof(Rgb) == 3 * sizeof(float), "Rgb pixels must pack as float triples");
+    render::write_image_atomically(
+        o.output, {o.width, o.height, std::span<const float>(image.front().data(), 3 * image.size()),
+                   render::PixelEncoding::display});
     out << "slice " << o.axis << " = " << o.at << " of " << o.mesh_path << " (" << field.triangle_count()
         << " triangles, R = " << o.radius << ", T = " << threshold << "): wrote " << o.output
         << " (" << o.width << "x" << o.height << ")\n";

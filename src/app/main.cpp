@@ -11,6 +11,7 @@
 
 #include "app/command_field.hpp"
 #include "app/command_info.hpp"
+#include "app/command_quick.hpp"
 #include "app/command_slice.hpp"
 
 namespace {
@@ -21,7 +22,8 @@ constexpr const char* kDescription =
     "Examples:\n"
     "  convray info scenes/models/soup.obj\n"
     "  echo '0 0 0' | convray field --mesh scenes/models/soup.obj --radius 0.2\n"
-    "  convray slice scenes/models/soup.obj --radius 0.25 --offset 0.1 -o slice.png\n";
+    "  convray slice scenes/models/soup.obj --radius 0.25 --offset 0.1 -o slice.png\n"
+    "  convray quick scenes/models/soup.obj --radius 0.2 -o soup.png\n";
 
 // The whole text as a decimal number (std::from_chars: no hex, no trailing junk, no throw).
 std::optional<double> parse_number(const std::string& text) {
@@ -51,12 +53,114 @@ CLI::Validator number_check(bool positive) {
 const CLI::Validator kPositive = number_check(true);
 const CLI::Validator kFinite = number_check(false);
 
+// Camera angles: strictly between 0 and 180 degrees, as POV-Ray's camera `angle`.
+const CLI::Validator kAngle(
+    [](const std::string& text) -> std::string {
+      const std::optional<double> v = parse_number(text);
+      if (v && *v > 0.0 && *v < 180.0) return "";
+      return "expected degrees with 0 < angle < 180, got '" + text + "'";
+    },
+    "DEGREES");
+
+// "X,Y,Z": three finite numbers separated by single commas, nothing else (no spaces).
+std::optional<convray::Vec3> parse_vector(const std::string& text) {
+  convray::Vec3 v;
+  size_t begin = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const size_t comma = text.find(',', begin);
+    if ((axis < 2) != (comma != std::string::npos)) return std::nullopt;
+    const std::optional<double> x = parse_number(text.substr(begin, comma - begin));
+    if (!x || !std::isfinite(*x)) return std::nullopt;
+    v[axis] = *x;
+    begin = comma + 1;
+  }
+  return v;
+}
+
+// Points and positions: --camera, --look-at, --light.
+const CLI::Validator kVector(
+    [](const std::string& text) -> std::string {
+      if (parse_vector(text)) return "";
+      return "expected X,Y,Z (three finite numbers, no spaces), got '" + text + "'";
+    },
+    "X,Y,Z");
+
 // "WIDTHxHEIGHT", each 1..32768.
 bool parse_size(const std::string& text, int& width, int& height) {
   int consumed = 0;
   return std::sscanf(text.c_str(), "%dx%d%n", &width, &height, &consumed) == 2 &&
          consumed == int(text.size()) && width >= 1 && height >= 1 && width <= 32768 &&
          height <= 32768;
+}
+
+// `convray quick`: the options CLI11 fills in, and those it leaves as text for
+// finish_quick_options: the size, and the vectors (which their validator has checked).
+struct QuickArguments {
+  convray::app::QuickOptions options;
+  std::string size = "800x600", camera, look_at, light;
+};
+
+CLI::App* add_quick_command(CLI::App& app, QuickArguments& q) {
+  CLI::App* quick = app.add_subcommand(
+      "quick",
+      "Render a picture of a mesh's convolution surface: every triangle convolved with the "
+      "kernel (1 - r^2/R^2)^2, the surface F = T ray traced through a POV-Ray-style perspective "
+      "camera, lit by one point light with hard shadows and Phong shading. Tiles run on all "
+      "cores; a progress bar shows on a terminal. The image appears complete or not at all. "
+      "Lengths are in the model's units (after --fit-box); coordinates are POV-Ray's "
+      "(left-handed, y up).\n"
+      "Example: convray quick bunny.ply.gz --fit-box 400 --radius 2 -o bunny.png");
+  quick->add_option("MESH", q.options.mesh_path, "mesh file: .obj .ply .stl .off, optionally .gz")
+      ->required();
+  quick->add_option("--radius", q.options.radius,
+                    "kernel radius R, model units (default: what 'convray info' advises: the "
+                    "smaller of the mean edge length and a tenth of the largest extent)")
+      ->check(kPositive);
+  auto* offset = quick->add_option("--offset", q.options.offset,
+                                   "surface at distance D from flat parts of the mesh, model "
+                                   "units, 0 <= D < R (default R/2)");
+  offset->check(kFinite);
+  quick->add_option("--threshold", q.options.threshold,
+                    "raw threshold T > 0 of the surface F = T, instead of --offset")
+      ->check(kPositive)
+      ->excludes(offset);
+  quick->add_option("--size", q.size,
+                    "image size in pixels, WIDTHxHEIGHT, each 1..32768 (default 800x600)");
+  quick->add_option("--fit-box", q.options.fit_box,
+                    "scale the model uniformly so its largest extent is S, model units, and "
+                    "centre its box at the origin; 400 fills the paper's (-200..200)^3 "
+                    "(default: the model as is)")
+      ->check(kPositive);
+  auto* camera = quick->add_option("--camera", q.camera,
+                                   "camera location X,Y,Z (default: framed automatically, from "
+                                   "the -z side and a little above, the whole surface in view)");
+  auto* look_at = quick->add_option("--look-at", q.look_at, "point X,Y,Z the camera looks at");
+  camera->check(kVector)->needs(look_at);
+  look_at->check(kVector)->needs(camera);
+  quick->add_option("--angle", q.options.angle,
+                    "horizontal field of view in degrees, as POV-Ray's camera angle (default 40)")
+      ->check(kAngle);
+  quick->add_option("--light", q.light,
+                    "point light position X,Y,Z (default: above, left of and behind the camera)")
+      ->check(kVector);
+  quick->add_flag("--reference", q.options.reference,
+                  "trace with the slow exact reference tracer instead of the fast path");
+  quick->add_flag("--stats", q.options.stats,
+                  "after the render, print rays, primitives per ray, field evaluations, roots, "
+                  "fits, subdivisions, fallbacks, surface memory and the time of each phase");
+  quick->add_option("-o,--output", q.options.output,
+                    "image file: .png 8-bit sRGB, .tif 16-bit sRGB, .exr linear float "
+                    "(default quick.png)");
+  return quick;
+}
+
+void finish_quick_options(QuickArguments& q) {
+  if (!parse_size(q.size, q.options.width, q.options.height)) {
+    throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 800x600, got " + q.size);
+  }
+  if (!q.camera.empty()) q.options.camera = parse_vector(q.camera);
+  if (!q.look_at.empty()) q.options.look_at = parse_vector(q.look_at);
+  if (!q.light.empty()) q.options.light = parse_vector(q.light);
 }
 
 }  // namespace
@@ -106,11 +210,15 @@ int main(int argc, char** argv) {
   slice->add_option("--size", slice_size, "image size WIDTHxHEIGHT (default 800x600)");
   slice->add_option("-o,--output", slice_options.output, "image file (.png, .exr, .tif, ...)");
 
+  QuickArguments quick_arguments;
+  CLI::App* quick = add_quick_command(app, quick_arguments);
+
   try {
     app.parse(argc, argv);
     if (*slice && !parse_size(slice_size, slice_options.width, slice_options.height)) {
       throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 800x600, got " + slice_size);
     }
+    if (*quick) finish_quick_options(quick_arguments);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -128,7 +236,7 @@ int main(int argc, char** argv) {
     const bool unknown_command = argc > 1 && argv[1][0] != '-' && !is_command(argv[1]);
     std::cerr << "convray: "
               << (unknown_command ? "unknown command '" + std::string(argv[1]) +
-                                        "' (expected info, field or slice)"
+                                        "' (expected info, field, slice or quick)"
                                   : std::string(e.what()))
               << "\nRun 'convray --help' for usage.\n";
     return 2;
@@ -136,6 +244,7 @@ int main(int argc, char** argv) {
 
   if (*info) return convray::app::run_info(info_path, std::cout, std::cerr);
   if (*slice) return convray::app::run_slice(slice_options, std::cout, std::cerr);
+  if (*quick) return convray::app::run_quick(quick_arguments.options, std::cout, std::cerr);
   if (*field) return convray::app::run_field(field_options, std::cin, std::cout, std::cerr);
   return 2;
 }

@@ -130,4 +130,9 @@ MeshStats compute_stats(const TriangleSoup& soup) {
   return stats;
 }
 
+double advised_radius(const MeshStats& stats) {
+  const Vec3 size = stats.bounds.extent();
+  return std::min(stats.mean_edge_length, std::max({size.x, size.y, size.z}) / 10.0);
+}
+
 }  // namespace convray::mesh

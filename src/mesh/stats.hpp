@@ -32,4 +32,10 @@ struct MeshStats {
 // The soup's indices must be in range (as load_mesh and the generators guarantee).
 MeshStats compute_stats(const TriangleSoup& soup);
 
+// The kernel radius to start from. R sets how far each triangle's influence reaches: about an
+// edge length keeps the surface close to the triangles, while a sizeable fraction of the model
+// melts it into a blob. So: the smaller of the mean edge length and a tenth of the largest
+// dimension of the bounds.
+double advised_radius(const MeshStats& stats);
+
 }  // namespace convray::mesh

@@ -1,0 +1,202 @@
+#include "app/command_quick.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <new>
+#include <ostream>
+#include <stdexcept>
+
+#include "app/soup_triangles.hpp"
+#include "implicit/convolution_surface.hpp"
+#include "implicit/threshold.hpp"
+#include "mesh/load.hpp"
+#include "mesh/stats.hpp"
+#include "render/camera.hpp"
+#include "render/convolution_traceable.hpp"
+#include "render/image_file.hpp"
+#include "render/progress.hpp"
+#include "render/render_image.hpp"
+#include "util/error.hpp"
+
+namespace convray::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Six significant digits: enough to compare, short enough to read.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+const SourceLoc kCommandLine{"command line"};
+
+struct PhaseTimes {
+  double load = 0, build = 0, render = 0, write = 0;
+};
+
+// The paper's protocol: scale uniformly so that the largest extent is `size`, and centre the
+// bounding box at the origin (size 400 fills (-200,-200,-200)-(200,200,200)).
+void fit_into_box(mesh::TriangleSoup& soup, double size) {
+  const Box3 box = soup.bounds();
+  const Vec3 extent = box.extent();
+  const double largest = std::max({extent.x, extent.y, extent.z});
+  const Vec3 center = 0.5 * (box.lo + box.hi);
+  const double scale = size / largest;  // largest > 0: every kept triangle has an area
+  for (Vec3& v : soup.vertices) v = (v - center) * scale;
+}
+
+void check_offset(const QuickOptions& o, double radius) {
+  if (o.offset && !(*o.offset >= 0.0 && *o.offset < radius)) {
+    throw InputError(kCommandLine, "--offset must satisfy 0 <= offset < radius (offset " +
+                                       number(*o.offset) + ", radius " + number(radius) + ")");
+  }
+}
+
+struct QuickObject {
+  implicit::ConvolutionObject object;  // one mesh, strength 1
+  double radius = 0.0;
+};
+
+// The mesh read, fitted into its box, and made a convolution object with its radius and
+// threshold resolved.
+QuickObject load_object(const QuickOptions& o) {
+  mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
+  if (o.fit_box) fit_into_box(loaded.soup, *o.fit_box);
+  QuickObject model;
+  model.radius = o.radius ? *o.radius : mesh::advised_radius(mesh::compute_stats(loaded.soup));
+  check_offset(o, model.radius);
+  model.object.threshold = o.threshold
+                               ? *o.threshold
+                               : implicit::threshold_for_offset(
+                                     1.0, model.radius, o.offset.value_or(0.5 * model.radius));
+  model.object.meshes.push_back({soup_triangles(loaded.soup), {1.0, model.radius}});
+  return model;
+}
+
+// The camera the options ask for; POV-Ray's own checks (distinct points, a view that is not
+// vertical) reported as command-line errors.
+render::Camera make_camera(const render::CameraSpec& spec) {
+  try {
+    return render::Camera(spec);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(kCommandLine, std::string("--camera/--look-at: ") + e.what());
+  }
+}
+
+render::CameraSpec camera_spec(const QuickOptions& o, const Box3& bounds) {
+  if (o.camera && o.look_at) return {*o.camera, *o.look_at, o.angle, o.width, o.height};
+  return render::frame_bounds(bounds, o.width, o.height, o.angle);
+}
+
+render::Lighting make_lighting(const QuickOptions& o, const render::Camera& camera,
+                               const Box3& bounds, double radius) {
+  render::Lighting lighting;
+  lighting.light.position = o.light ? *o.light : render::default_light_position(camera, bounds);
+  // Hit points are polished to rounding level; features are no thinner than about R.
+  lighting.shadow_bias = 1e-5 * radius;
+  return lighting;
+}
+
+void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surface,
+                 size_t triangles, const render::RenderStats& s, const PhaseTimes& t,
+                 std::ostream& out) {
+  const implicit::TraceStats& trace = s.trace;
+  const double per_query = trace.rays ? double(trace.primitives) / double(trace.rays) : 0.0;
+  const size_t bytes = surface.memory_bytes();
+  out << "image: " << o.width << "x" << o.height << " (" << uint64_t(o.width) * uint64_t(o.height)
+      << " pixels)\n"
+      << "tracer: "
+      << (o.reference ? "reference (exact field, Lipschitz-safe march)"
+                      : "fast (fits, Bezier clipping)")
+      << "\n"
+      << "rays: " << s.camera_rays + s.shadow_rays << " (camera " << s.camera_rays << ", shadow "
+      << s.shadow_rays << ")\n"
+      << "rays reaching the surface's bounds: " << trace.rays << "\n"
+      << "camera rays that hit: " << s.hits << "\n"
+      << "primitives per ray: " << number(per_query) << " (support intervals crossed)\n"
+      << "field evaluations: " << trace.field_evaluations << "\n"
+      << "roots: " << trace.roots << "\n"
+      << "fits: " << trace.fits << "\n"
+      << "subdivisions: " << trace.subdivisions << "\n"
+      << "fallbacks: " << trace.fallbacks << "\n"
+      << "surface memory: " << number(double(bytes) / (1024.0 * 1024.0)) << " MiB ("
+      << number(triangles ? double(bytes) / double(triangles) : 0.0) << " bytes per triangle)\n"
+      << "time load: " << number(t.load) << " s\n"
+      << "time build: " << number(t.build) << " s\n"
+      << "time render: " << number(t.render) << " s\n"
+      << "time write: " << number(t.write) << " s\n"
+      << "time total: " << number(t.load + t.build + t.render + t.write) << " s\n";
+}
+
+// The whole command once the options are known to be well formed.
+void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
+  // Everything that can be checked before the work starts is checked first.
+  render::check_image_destination(o.output);
+  if (o.radius) check_offset(o, *o.radius);
+  if (o.camera && o.look_at) make_camera(camera_spec(o, Box3{}));
+
+  PhaseTimes times;
+  Clock::time_point start = Clock::now();
+  const QuickObject model = load_object(o);
+  times.load = seconds_since(start);
+
+  start = Clock::now();
+  const implicit::ConvolutionSurface surface(model.object);
+  times.build = seconds_since(start);
+  const double radius = model.radius, threshold = model.object.threshold;
+  const size_t triangles = model.object.meshes.front().triangles.size();
+
+  start = Clock::now();
+  const Box3 bounds = surface.bounds();
+  const render::Camera camera = make_camera(camera_spec(o, bounds));
+  const render::Lighting lighting = make_lighting(o, camera, bounds, radius);
+  const render::ConvolutionTraceable fast(surface);
+  const render::ReferenceTraceable reference(surface);
+  const render::Traceable& traceable =
+      o.reference ? static_cast<const render::Traceable&>(reference) : fast;
+  // A bar only where someone watches: on a terminal, never into a pipe or a log file.
+  render::Progress progress("render", uint64_t(o.width) * uint64_t(o.height), err,
+                            render::Progress::stderr_is_terminal());
+  const render::RenderResult result = render::render_image(traceable, camera, lighting, &progress);
+  times.render = seconds_since(start);
+
+  start = Clock::now();
+  render::write_image_atomically(
+      o.output, {o.width, o.height, result.film.rgb(), render::PixelEncoding::linear});
+  times.write = seconds_since(start);
+
+  out << "quick: " << o.mesh_path << " (" << triangles << " triangles, R = " << number(radius)
+      << ", T = " << number(threshold) << "): wrote " << o.output << " (" << o.width << "x"
+      << o.height << ", " << number(times.load + times.build + times.render + times.write)
+      << " s)\n";
+  if (o.stats) print_stats(o, surface, triangles, result.stats, times, out);
+}
+
+}  // namespace
+
+int run_quick(const QuickOptions& options, std::ostream& out, std::ostream& err) {
+  try {
+    render_quick(options, out, err);
+    return 0;
+  } catch (const InputError& e) {
+    err << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    err << "convray quick: out of memory (try a smaller --size, or a smaller mesh or radius)\n";
+    return 1;
+  } catch (const std::exception& e) {
+    err << "convray quick: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace convray::app

@@ -1,0 +1,54 @@
+#pragma once
+// Writing pictures through OpenImageIO, the format chosen by the file name's extension:
+//
+//   .png (and any other 8-bit format OpenImageIO writes: .jpg, .ppm, .bmp, .tga, ...)
+//                  8 bits per channel, sRGB-encoded
+//   .tif .tiff     16 bits per channel, sRGB-encoded
+//   .exr .hdr      32-bit float (.hdr: RGBE), linear: the renderer's values untouched
+//
+// Renderers compute linear light (PixelEncoding::linear); integer formats get the sRGB
+// transfer curve (IEC 61966-2-1) applied before quantising, the way image viewers expect
+// them. Pictures whose values are already meant for display (`convray slice`'s colour ramp)
+// say PixelEncoding::display and are stored as they are.
+//
+// The file appears complete or not at all: the pixels go to `.NAME.partial.EXT` in the same
+// folder, which is renamed over NAME.EXT once closed (a rename within one file system is
+// atomic), and removed on any failure. A render interrupted before writing leaves nothing.
+#include <span>
+#include <string>
+
+namespace convray::render {
+
+enum class PixelEncoding {
+  linear,   // linear light: sRGB-encoded for integer formats
+  display,  // already display-referred: stored as given
+};
+
+struct ImagePixels {
+  int width = 0, height = 0;
+  std::span<const float> rgb;  // row-major, top row first, 3 floats per pixel
+  PixelEncoding encoding = PixelEncoding::linear;
+};
+
+struct ImageFormat {
+  std::string extension;  // lower case, without the dot: "png"
+  int bits = 8;           // per channel: 8, 16 or 32
+  bool floating = false;  // 32-bit float, linear
+};
+
+// The format a file of this name is written in. Throws InputError ("PATH: ...") when the name
+// has no extension or OpenImageIO has no writer for it.
+ImageFormat image_format_for(const std::string& path);
+
+// Checks, before any work is done, that `path` can be written: a known format, and a folder
+// that exists. Throws InputError otherwise.
+void check_image_destination(const std::string& path);
+
+// Writes the picture as described above. Throws InputError when the file cannot be written
+// (unknown format, missing folder, disk full, ...); no file is left behind then.
+void write_image_atomically(const std::string& path, const ImagePixels& pixels);
+
+// The sRGB transfer curve, for linear values clamped to [0, 1].
+float encode_srgb(float linear);
+
+}  // namespace convray::render
