@@ -52,6 +52,7 @@ class SupportIndex {
 
   // Appends every primitive whose support the line origin + t direction (unit direction)
   // crosses with some t in [tmin, tmax]; the interval is the whole crossing, not clipped.
+  // tmin must be finite (an infinite one is read as 0).
   void intersect(const Vec3& origin, const Vec3& direction, double tmin, double tmax,
                  std::vector<SupportInterval>& out) const;
   // Appends every primitive within its radius of p (strictly: the field is zero at distance R).
