@@ -54,10 +54,13 @@ void fit_into_box(mesh::TriangleSoup& soup, double size) {
   for (Vec3& v : soup.vertices) v = (v - center) * scale;
 }
 
-void check_offset(const QuickOptions& o, double radius) {
-  if (o.offset && !(*o.offset >= 0.0 && *o.offset < radius)) {
-    throw InputError(kCommandLine, "--offset must satisfy 0 <= offset < radius (offset " +
-                                       number(*o.offset) + ", radius " + number(radius) + ")");
+// T from --threshold or --offset (default R/2) for a mesh of strength 1; a bad offset is a
+// command-line error.
+double quick_threshold(const QuickOptions& o, double radius) {
+  try {
+    return implicit::resolve_threshold(1.0, radius, o.offset, o.threshold);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(kCommandLine, e.what());
   }
 }
 
@@ -73,11 +76,7 @@ QuickObject load_object(const QuickOptions& o) {
   if (o.fit_box) fit_into_box(loaded.soup, *o.fit_box);
   QuickObject model;
   model.radius = o.radius ? *o.radius : mesh::advised_radius(mesh::compute_stats(loaded.soup));
-  check_offset(o, model.radius);
-  model.object.threshold = o.threshold
-                               ? *o.threshold
-                               : implicit::threshold_for_offset(
-                                     1.0, model.radius, o.offset.value_or(0.5 * model.radius));
+  model.object.threshold = quick_threshold(o, model.radius);
   model.object.meshes.push_back({soup_triangles(loaded.soup), {1.0, model.radius}});
   return model;
 }
@@ -141,7 +140,7 @@ void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surf
 void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
   // Everything that can be checked before the work starts is checked first.
   render::check_image_destination(o.output);
-  if (o.radius) check_offset(o, *o.radius);
+  if (o.radius) quick_threshold(o, *o.radius);
   if (o.camera && o.look_at) make_camera(camera_spec(o, Box3{}));
 
   PhaseTimes times;

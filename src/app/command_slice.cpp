@@ -90,14 +90,14 @@ void draw_cross_section(const std::vector<field::Triangle>& triangles, const Pla
 int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
   try {
     render::check_image_destination(o.output);  // before the work, not after it
-    if (o.offset && !(*o.offset >= 0.0 && *o.offset < o.radius)) {
-      throw InputError({"command line"}, "--offset must satisfy 0 <= offset < radius");
+    double threshold = 0.0;
+    try {
+      threshold = implicit::resolve_threshold(o.strength, o.radius, o.offset, o.threshold);
+    } catch (const std::invalid_argument& e) {
+      throw InputError({"command line"}, e.what());
     }
     const mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
     const implicit::MeshField field(soup_triangles(loaded.soup), o.radius, o.strength);
-    const double threshold =
-        o.threshold ? *o.threshold
-                    : implicit::threshold_for_offset(o.strength, o.radius, o.offset.value_or(0.5 * o.radius));
     const PlaneFrame frame =
         frame_for(loaded.soup.bounds(), o.axis, o.at, 1.5 * o.radius, o.width, o.height);
 

@@ -1,5 +1,9 @@
 #pragma once
 // Thresholds of convolution surfaces F = T.
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
 #include "util/math.hpp"
 
 namespace convray::implicit {
@@ -11,6 +15,21 @@ inline double threshold_for_offset(double strength, double radius, double offset
   const double r2 = radius * radius;
   const double k = r2 - offset * offset;
   return strength * (kPi / 3.0) * k * k * k / (r2 * r2);
+}
+
+// The threshold a user asked for: T itself when given, else the one for `offset` (R/2 when
+// neither is given). Throws std::invalid_argument unless 0 <= offset < radius.
+inline double resolve_threshold(double strength, double radius, std::optional<double> offset,
+                                std::optional<double> threshold) {
+  if (threshold) return *threshold;
+  const double d = offset.value_or(0.5 * radius);
+  if (!(d >= 0.0 && d < radius)) {
+    std::ostringstream message;
+    message << "--offset must satisfy 0 <= offset < radius (offset " << d << ", radius " << radius
+            << ")";
+    throw std::invalid_argument(message.str());
+  }
+  return threshold_for_offset(strength, radius, d);
 }
 
 }  // namespace convray::implicit
