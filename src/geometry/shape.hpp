@@ -1,0 +1,56 @@
+#pragma once
+// What the tracer asks of every object, classic primitive, CSG or implicit surface alike: every
+// crossing of its boundary along a ray (CSG combines these), the first one, and whether a
+// point is inside (CSG and the inside tests of `inverse`, `clipped_by`, refraction).
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "implicit/ray.hpp"
+#include "implicit/trace_stats.hpp"
+#include "scene/texture.hpp"
+#include "util/math.hpp"
+
+namespace convray::geometry {
+
+using implicit::Ray;
+using implicit::TraceStats;
+
+// What the renderer needs to shade a surface: resolved at build time (a CSG child without a
+// texture gets its parent's, an object without any gets the default texture), owned by the
+// shape tree, shared by every crossing of that surface.
+struct SurfaceInfo {
+  scene::TexturePtr texture;        // never null after building
+  scene::Interior interior;
+  bool no_shadow = false;
+};
+
+struct Crossing {
+  double t = 0.0;                   // along the ray (unit direction: a distance)
+  Vec3 normal{0.0, 0.0, 1.0};       // unit, world space, pointing out of the solid
+  const SurfaceInfo* surface = nullptr;
+};
+
+class Shape {
+ public:
+  virtual ~Shape() = default;
+
+  // World-space bounds; infinite components for unbounded shapes (plane, inverse, ...).
+  virtual Box3 bounds() const = 0;
+
+  // Appends every crossing in (tmin, tmax), ascending in t. `ray.direction` has unit length.
+  virtual void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
+                         TraceStats& stats) const = 0;
+
+  // The first crossing in (tmin, tmax). The default takes the first of crossings(); shapes
+  // that can stop early override it.
+  virtual std::optional<Crossing> first_crossing(const Ray& ray, double tmin, double tmax,
+                                                 TraceStats& stats) const;
+
+  // Whether p is inside the solid (on the boundary: either answer).
+  virtual bool inside(const Vec3& p) const = 0;
+};
+
+using ShapePtr = std::unique_ptr<Shape>;
+
+}  // namespace convray::geometry

@@ -1,0 +1,112 @@
+#pragma once
+// The objects of a scene as plain records: one Object node per shape or CSG operation, each
+// with its placement, texture, interior and flags, and the place in the scene file that made
+// it (for messages). Shapes are in their own space; `transform` places them. geometry/ turns
+// these records into traceable shapes.
+#include <array>
+#include <memory>
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "implicit/convolution_object.hpp"
+#include "scene/texture.hpp"
+#include "scene/transform.hpp"
+#include "util/error.hpp"
+#include "util/math.hpp"
+
+namespace convray::scene {
+
+struct Object;
+using ObjectPtr = std::shared_ptr<const Object>;
+
+struct Sphere {
+  Vec3 center{0.0};
+  double radius = 1.0;
+};
+struct Box {
+  Vec3 corner1{-1.0}, corner2{1.0};  // any two opposite corners
+};
+// POV-Ray's plane: the points p with dot(p, normal / |normal|) < distance are inside.
+struct Plane {
+  Vec3 normal{0.0, 1.0, 0.0};
+  double distance = 0.0;
+};
+struct Cylinder {
+  Vec3 base{0.0}, cap{0.0, 1.0, 0.0};
+  double radius = 1.0;
+  bool open = false;  // no end caps (and then no inside)
+};
+struct Cone {
+  Vec3 base{0.0};
+  double base_radius = 1.0;
+  Vec3 cap{0.0, 1.0, 0.0};
+  double cap_radius = 0.0;
+  bool open = false;
+};
+// About the y axis, in the plane y = 0.
+struct Torus {
+  double major = 1.0, minor = 0.25;
+};
+struct Disc {
+  Vec3 center{0.0}, normal{0.0, 1.0, 0.0};
+  double radius = 1.0, hole_radius = 0.0;
+};
+// `triangle` and `smooth_triangle` (normals given), and the faces of `mesh` and `mesh2`.
+struct MeshFace {
+  std::array<int, 3> vertices{0, 0, 0};
+  std::array<int, 3> normals{-1, -1, -1};  // -1: flat face
+  int texture = -1;                        // index into TriangleMesh::textures; -1: object's
+};
+struct TriangleMesh {
+  std::vector<Vec3> vertices;
+  std::vector<Vec3> normals;
+  std::vector<MeshFace> faces;
+  std::vector<TexturePtr> textures;
+  // `inside_vector`: a mesh with one is a solid (inside by ray parity along it).
+  std::optional<Vec3> inside_vector;
+};
+
+// A texture given to one component of a blob or convolution object: `index` counts the
+// components in the order the scene listed them (all kinds together).
+struct ComponentTexture {
+  size_t index = 0;
+  TexturePtr texture;
+};
+
+// POV-Ray's `blob` and our `convolution`: both become the field of implicit::ConvolutionObject
+// (blob: blob_spheres / blob_cylinders; convolution: meshes, segments, arcs, points), with the
+// components already in the object's own space (component transforms applied).
+struct Implicit {
+  implicit::ConvolutionObject object;
+  // For per-component textures: the order in which components were listed, as (kind, index in
+  // that kind's vector of `object`).
+  enum class Kind { mesh, segment, arc, point, blob_sphere, blob_cylinder };
+  std::vector<std::pair<Kind, size_t>> component_order;
+  std::vector<ComponentTexture> component_textures;
+  bool is_blob = false;  // written as `blob`: POV-Ray's inside rule F > T - 1e-6 applies
+};
+
+enum class CsgOperation { union_, intersection, difference, merge };
+struct Csg {
+  CsgOperation operation = CsgOperation::union_;
+  std::vector<ObjectPtr> children;  // in order; difference: first minus the rest
+};
+
+using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
+                           Implicit, Csg>;
+
+struct Object {
+  Shape shape;
+  Transform transform;      // own space -> world (or parent CSG space)
+  TexturePtr texture;       // null: inherited from the CSG parent, else the default texture
+  std::optional<Interior> interior;
+  bool inverse = false;     // inside and outside swapped
+  bool no_shadow = false;   // casts no shadow
+  bool hollow = false;
+  std::vector<ObjectPtr> clipped_by;  // keep only the parts inside all of these
+  ObjectPtr bounded_by;               // a bound the renderer may use; never changes the image
+  SourceLoc loc;            // where the scene declared it
+};
+
+}  // namespace convray::scene

@@ -1,0 +1,102 @@
+#pragma once
+// Textures as POV-Ray describes them: a pigment (a colour, or a pattern mapped through a
+// colour map), a finish (how light is reflected), a normal perturbation and, for the object,
+// an interior. Plain records; render/ evaluates them.
+//
+// Pattern space: every pattern is evaluated at `transform.inverse_point(world_point)`. The
+// parser appends an object's transforms to the transforms of the textures the object already
+// has (POV-Ray moves a texture with its object), so the renderer needs nothing else.
+#include <memory>
+#include <vector>
+
+#include "scene/color.hpp"
+#include "scene/transform.hpp"
+
+namespace convray::scene {
+
+enum class Pattern {
+  solid,     // pigment { color ... }: no pattern
+  checker,   // unit cubes alternating colour_map entries 0 and 1
+  gradient,  // fractional part of p . axis
+  marble,    // triangle wave of x (+ turbulence)
+  wood,      // concentric cylinders about z
+  granite,   // fractal noise
+  agate,     // turbulence-warped sine
+  bozo,      // noise
+  radial,    // angle about y in [0, 1)
+  onion,     // concentric spheres
+  leopard,
+  spotted,   // same as bozo
+  ripples,   // normal patterns (also usable as pigments)
+  waves,
+  wrinkles,
+  bumps,
+  dents,
+};
+
+struct ColorMapEntry {
+  double value = 0.0;  // in [0, 1], ascending
+  Color color;
+};
+
+// POV-Ray's turbulence warp: the pattern is evaluated at p + turbulence * noise_vector(p),
+// the noise summed over `octaves` with amplitude `omega`^k and frequency `lambda`^k.
+struct Turbulence {
+  Vec3 amount{0.0};
+  int octaves = 6;
+  double omega = 0.5;
+  double lambda = 2.0;
+  bool active() const { return amount != Vec3(0.0); }
+};
+
+// What every pattern shares: where it is evaluated and how its value is reshaped.
+struct PatternSpace {
+  Pattern pattern = Pattern::solid;
+  Vec3 gradient_axis{1.0, 0.0, 0.0};  // gradient only
+  Turbulence turbulence;
+  double frequency = 1.0;  // value -> fract(value * frequency + phase)
+  double phase = 0.0;
+  Transform transform;     // pattern space -> world
+};
+
+struct Pigment {
+  PatternSpace space;
+  Color color;                          // solid; also the colour where no map applies
+  std::vector<ColorMapEntry> color_map; // empty: the pattern's default map (render/)
+  // checker (and other block patterns): the listed colours, in order.
+  std::vector<Color> block_colors;
+};
+
+struct Finish {
+  Vec3 ambient{0.1};     // POV-Ray 3.7 default, multiplied by global ambient_light
+  double diffuse = 0.6;
+  double brilliance = 1.0;
+  double phong = 0.0;
+  double phong_size = 40.0;
+  double specular = 0.0;
+  double roughness = 0.05;
+  Vec3 reflection{0.0};  // constant reflection colour (`reflection r` or `reflection rgb`)
+  double metallic = 0.0; // 0..1: highlights (and reflection) tinted by the pigment
+};
+
+struct Normal {
+  PatternSpace space;      // solid: no perturbation
+  double amount = 0.0;     // bump height: `bumps 0.5`
+};
+
+struct Interior {
+  double ior = 1.0;
+};
+
+struct Texture {
+  Pigment pigment;
+  Finish finish;
+  Normal normal;
+};
+
+using TexturePtr = std::shared_ptr<const Texture>;
+
+// POV-Ray's default texture: black pigment, the default finish, no normal.
+inline Texture default_texture() { return Texture{}; }
+
+}  // namespace convray::scene

@@ -1,0 +1,31 @@
+#pragma once
+// What the command line tells the scene: the image size, the animation clock, where includes
+// are searched, identifiers declared from outside, and the limits that stop runaway scenes.
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace convray::sdl {
+
+struct ParseOptions {
+  int image_width = 800, image_height = 600;
+  // Animation identifiers (clock, clock_delta, clock_on, frame_number, ...): POV-Ray's values
+  // for a still image unless the command line says otherwise.
+  double clock = 0.0, clock_delta = 0.0;
+  bool clock_on = false;
+  int frame_number = 0, initial_frame = 0, final_frame = 0;
+  double initial_clock = 0.0, final_clock = 0.0;
+  // +L paths, searched after the scene's own folder and before POV-Ray's installed includes.
+  std::vector<std::string> library_paths;
+  // Where POV-Ray's include files are installed, searched last when the folder exists.
+  std::vector<std::string> system_include_paths{"/usr/share/povray-3.7/include"};
+  // Declare=ID=value from the command line: float values.
+  std::vector<std::pair<std::string, double>> declares;
+  // Runaway scenes stop with an error at these limits.
+  int max_include_depth = 64;
+  int max_macro_depth = 256;
+  long long max_loop_iterations = 10'000'000;   // per #while / #for loop
+  long long max_tokens = 2'000'000'000;         // tokens read in all
+};
+
+}  // namespace convray::sdl

@@ -1,0 +1,100 @@
+#pragma once
+// The scene parser's core: tokens from the lexer (grammar/), with POV-Ray's directives,
+// macros and includes carried out as the tokens are read, so the code that parses scene items
+// (items.hpp) only ever sees plain tokens; and expressions, evaluated as they are parsed, as
+// POV-Ray does.
+//
+// Errors are InputError at `file:line:col` of the offending token. The parser knows nothing
+// of rendering: it produces a scene::Scene of plain records.
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "scene/scene.hpp"
+#include "sdl/options.hpp"
+#include "sdl/value.hpp"
+#include "util/error.hpp"
+
+namespace convray::sdl {
+
+struct Token {
+  enum class Kind { identifier, keyword, number, string, symbol, end };
+  Kind kind = Kind::end;
+  std::string text;     // as written (strings: the decoded contents)
+  double number = 0.0;  // Kind::number
+  SourceLoc loc;
+};
+
+// Defaults set by `#default { texture {...} pigment {...} finish {...} }`.
+struct Defaults {
+  scene::Texture texture = scene::default_texture();
+};
+
+class Parser {
+ public:
+  Parser(std::string file_name, std::string text, ParseOptions options);
+  ~Parser();
+  Parser(const Parser&) = delete;
+  Parser& operator=(const Parser&) = delete;
+
+  // The whole scene file: top-level statements until the end of the text.
+  scene::Scene parse_scene();
+
+  // --- Tokens, after directives, macro calls and includes have been carried out.
+  const Token& peek();
+  Token next();
+  // Whether the next token is this keyword or symbol ("sphere", "{", "<", ...).
+  bool at(std::string_view text);
+  // Consumes the next token if it is `text`.
+  bool accept(std::string_view text);
+  // Consumes `text` or fails with "expected TEXT in WHAT, found ...".
+  Token expect(std::string_view text, std::string_view what);
+
+  // --- Expressions, evaluated.
+  Value parse_expression();       // any type: float, vector, colour, string, array, item
+  double parse_float();           // a float expression
+  int parse_int();                // a float expression with an integer value
+  Vec3 parse_vector();            // a vector expression; a float f is promoted to <f, f, f>
+  scene::Color parse_color();     // colour keywords and expressions: rgb, rgbf, red ..., srgb
+  std::string parse_string();     // a string expression (concat, str, ...)
+  // After `[`, `(`: the optional comma between items, as POV-Ray accepts it.
+  void accept_comma() { accept(","); }
+
+  // The value of an identifier that is declared, if the next token is one (not consumed):
+  // item parsers use it for `texture { T_Stone }`, `object { Thing }`, `pigment { P }`.
+  const Value* peek_declared();
+
+  // --- Context.
+  const ParseOptions& options() const;
+  Defaults& defaults();
+  // A file named in the scene (mesh, include), resolved as POV-Ray resolves includes: the
+  // scene's folder, the +L paths, the installed include folder. Fails at `loc` if not found.
+  std::string resolve_file(const std::string& name, const SourceLoc& loc) const;
+
+  // Errors and warnings, with the source line and a caret when the location has one.
+  [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
+  [[noreturn]] void fail_here(const std::string& message);  // at peek()
+  void warn(const SourceLoc& loc, const std::string& message);
+  const std::vector<std::string>& warnings() const;
+
+  // Global identifiers after parsing (for `convray field scene.pov --object NAME`).
+  const std::map<std::string, Value>& globals() const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+// Parse a scene file or a string. Both throw InputError on bad input.
+struct ParseResult {
+  scene::Scene scene;
+  std::map<std::string, Value> globals;
+  std::vector<std::string> warnings;
+};
+ParseResult parse_file(const std::string& path, const ParseOptions& options);
+ParseResult parse_string(const std::string& text, const std::string& name,
+                         const ParseOptions& options);
+
+}  // namespace convray::sdl
