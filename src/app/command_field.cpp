@@ -1,18 +1,21 @@
 #include "app/command_field.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <istream>
 #include <optional>
 #include <ostream>
 #include <string_view>
 #include <vector>
 
-#include <tbb/parallel_for.h>
-
 #include "app/soup_triangles.hpp"
+#include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_field.hpp"
 #include "mesh/load.hpp"
+#include "sdl/parser.hpp"
 #include "util/error.hpp"
 
 namespace convray::app {
@@ -21,12 +24,15 @@ namespace {
 
 constexpr size_t kLinesPerBlock = 1 << 16;
 
-// Parses "x y z" (spaces or tabs, nothing else). Returns an error message, or nothing.
+// Parses "x y z" (spaces or tabs, nothing else). Returns an error message, or
+// nothing.
 std::optional<std::string> parse_point(std::string_view line, Vec3& out) {
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // tolerate CRLF files
   const char* p = line.data();
   const char* end = p + line.size();
-  const auto skip_blanks = [&] { while (p < end && (*p == ' ' || *p == '\t')) ++p; };
+  const auto skip_blanks = [&] {
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  };
   const char* names[] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k) {
     skip_blanks();
@@ -54,54 +60,97 @@ std::optional<std::string> parse_point(std::string_view line, Vec3& out) {
 
 void append_number(std::string& out, double v) {
   char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v,
-                                       std::chars_format::general, 17);
+  const auto [end, ec] =
+      std::to_chars(buffer, buffer + sizeof buffer, v, std::chars_format::general, 17);
   out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+using FieldFunction = std::function<field::FieldSample(const Vec3&)>;
+
+// Answers every "x y z" line of `in`; returns the exit code.
+int answer_points(const FieldFunction& field, std::istream& in, std::ostream& out,
+                  std::ostream& err) {
+  std::vector<std::string> lines;
+  std::vector<Vec3> points;
+  std::vector<std::string> answers;
+  size_t line_number = 0;
+  for (bool more = true; more;) {
+    // Read a block, parse it serially (the first bad line stops everything
+    // after it), evaluate it in parallel, print it in order.
+    lines.clear();
+    std::string line;
+    while (lines.size() < kLinesPerBlock && (more = bool(std::getline(in, line)))) {
+      lines.push_back(std::move(line));
+    }
+    points.resize(lines.size());
+    std::optional<std::string> problem;
+    size_t good = 0;
+    for (; good < lines.size(); ++good) {
+      if ((problem = parse_point(lines[good], points[good]))) break;
+    }
+    answers.assign(good, {});
+    tbb::parallel_for(size_t(0), good, [&](size_t i) {
+      const field::FieldSample s = field(points[i]);
+      std::string& a = answers[i];
+      append_number(a, s.value);
+      for (int k = 0; k < 3; ++k) a += ' ', append_number(a, s.gradient[k]);
+      a += '\n';
+    });
+    for (const std::string& a : answers) out << a;
+    if (problem) {
+      out.flush();
+      err << "stdin:" << line_number + good + 1 << ": " << *problem << "\n";
+      return 2;
+    }
+    line_number += lines.size();
+  }
+  out.flush();
+  return 0;
+}
+
+// The declared object `name` of the scene, which must be a convolution object
+// or a blob.
+const scene::Object& declared_implicit(const sdl::ParseResult& parsed, const FieldOptions& o) {
+  const SourceLoc where{o.scene_path};
+  const auto found = parsed.globals.find(o.object_name);
+  if (found == parsed.globals.end()) {
+    throw InputError(where, "no identifier '" + o.object_name + "' is declared in the scene");
+  }
+  const scene::ObjectPtr* object = found->second.get<scene::ObjectPtr>();
+  if (!object || !std::holds_alternative<scene::Implicit>((*object)->shape)) {
+    throw InputError(found->second.loc, "'" + o.object_name + "' is " +
+                                            sdl::type_name(found->second) +
+                                            ", not a convolution object or blob");
+  }
+  return **object;
+}
+
+int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
+  sdl::ParseOptions parse_options;
+  parse_options.library_paths = o.library_paths;
+  const sdl::ParseResult parsed = sdl::parse_file(o.scene_path, parse_options);
+  const scene::Object& object = declared_implicit(parsed, o);
+  const implicit::ConvolutionSurface surface(std::get<scene::Implicit>(object.shape).object);
+  const scene::Transform& placed = object.transform;
+  // F_world(p) = F(M^-1 p), so grad F_world = M^-T grad F: the normal rule of
+  // the transform.
+  return answer_points(
+      [&](const Vec3& p) {
+        field::FieldSample s = surface.field(placed.inverse_point(p));
+        s.gradient = placed.normal(s.gradient);
+        return s;
+      },
+      in, out, err);
 }
 
 }  // namespace
 
 int run_field(const FieldOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
   try {
+    if (!options.scene_path.empty()) return run_scene_field(options, in, out, err);
     const mesh::LoadedMesh loaded = mesh::load_mesh(options.mesh_path);
     const implicit::MeshField field(soup_triangles(loaded.soup), options.radius, options.strength);
-
-    std::vector<std::string> lines;
-    std::vector<Vec3> points;
-    std::vector<std::string> answers;
-    size_t line_number = 0;
-    for (bool more = true; more;) {
-      // Read a block, parse it serially (the first bad line stops everything after it),
-      // evaluate it in parallel, print it in order.
-      lines.clear();
-      std::string line;
-      while (lines.size() < kLinesPerBlock && (more = bool(std::getline(in, line)))) {
-        lines.push_back(std::move(line));
-      }
-      points.resize(lines.size());
-      std::optional<std::string> problem;
-      size_t good = 0;
-      for (; good < lines.size(); ++good) {
-        if ((problem = parse_point(lines[good], points[good]))) break;
-      }
-      answers.assign(good, {});
-      tbb::parallel_for(size_t(0), good, [&](size_t i) {
-        const field::FieldSample s = field.field(points[i]);
-        std::string& a = answers[i];
-        append_number(a, s.value);
-        for (int k = 0; k < 3; ++k) a += ' ', append_number(a, s.gradient[k]);
-        a += '\n';
-      });
-      for (const std::string& a : answers) out << a;
-      if (problem) {
-        out.flush();
-        err << "stdin:" << line_number + good + 1 << ": " << *problem << "\n";
-        return 2;
-      }
-      line_number += lines.size();
-    }
-    out.flush();
-    return 0;
+    return answer_points([&](const Vec3& p) { return field.field(p); }, in, out, err);
   } catch (const InputError& e) {
     err << e.what() << "\n";
     return 2;

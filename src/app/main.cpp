@@ -2,26 +2,35 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "app/command_field.hpp"
 #include "app/command_info.hpp"
 #include "app/command_quick.hpp"
+#include "app/command_render.hpp"
 #include "app/command_slice.hpp"
+#include "app/render_options.hpp"
 
 namespace {
 
 constexpr const char* kDescription =
     "convray - convolution surfaces of polygon soups and skeletons, in closed form.\n"
     "\n"
+    "Render a scene:   convray SCENE.pov [options]   (run 'convray SCENE.pov --help' for them)\n"
+    "  or as POV-Ray:  convray +ISCENE.pov +OOUT.png +W800 +H600 +A0.3 -D +WT2\n"
+    "\n"
     "Examples:\n"
+    "  convray scenes/soup.pov -o soup.png\n"
     "  convray info scenes/models/soup.obj\n"
     "  echo '0 0 0' | convray field --mesh scenes/models/soup.obj --radius 0.2\n"
+    "  echo '0 0 0' | convray field scenes/soup.pov --object Soup\n"
     "  convray slice scenes/models/soup.obj --radius 0.25 --offset 0.1 -o slice.png\n"
     "  convray quick scenes/models/soup.obj --radius 0.2 -o soup.png\n";
 
@@ -163,9 +172,57 @@ void finish_quick_options(QuickArguments& q) {
   if (!q.light.empty()) q.options.light = parse_vector(q.light);
 }
 
+bool is_command(const std::string& word) {
+  return word == "info" || word == "field" || word == "slice" || word == "quick";
+}
+
+// `convray SCENE.pov ...` and `convray +ISCENE.pov ...`: not a subcommand, so the render.
+int render_main(const std::vector<std::string>& args) {
+  for (const std::string& arg : args) {
+    if (arg == "-h" || arg == "--help") {
+      std::cout << convray::app::kRenderUsage;
+      return 0;
+    }
+  }
+  convray::app::RenderOptions options;
+  try {
+    options = convray::app::parse_render_arguments(args);
+  } catch (const convray::app::UsageError& e) {
+    std::cerr << "convray: " << e.what() << "\nRun 'convray --help' for usage.\n";
+    return 2;
+  }
+  const std::filesystem::path scene(options.scene);
+  if (!scene.has_extension() && !std::filesystem::exists(scene)) {
+    std::cerr << "convray: unknown command '" << options.scene
+              << "' (expected info, field, slice, quick or a scene file)\n"
+                 "Run 'convray --help' for usage.\n";
+    return 2;
+  }
+  return convray::app::run_render(options, std::cout, std::cerr);
+}
+
+// Checks what CLI11 cannot: a scene with --object, or a mesh with --radius.
+void check_field_options(const convray::app::FieldOptions& o, const CLI::App& field) {
+  if (!o.scene_path.empty()) {
+    if (!o.mesh_path.empty()) throw CLI::ValidationError("field", "give a SCENE or --mesh, not both");
+    if (o.object_name.empty()) {
+      throw CLI::ValidationError("field", "a SCENE needs --object NAME (a declared object)");
+    }
+  } else {
+    if (o.mesh_path.empty()) throw CLI::ValidationError("field", "give --mesh MESH or a SCENE");
+    if (field.count("--radius") == 0) throw CLI::ValidationError("field", "--mesh needs --radius");
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 2) {
+    const std::string first = argv[1];
+    if (!is_command(first) && first != "-h" && first != "--help" && first != "--version") {
+      return render_main(std::vector<std::string>(argv + 1, argv + argc));
+    }
+  }
   CLI::App app{kDescription, "convray"};
   app.set_version_flag("--version", "convray 0.1.0");
   app.require_subcommand(1);
@@ -183,9 +240,15 @@ int main(int argc, char** argv) {
       "field", "Evaluate the summed raw field of a mesh's triangles at points read from "
                "standard input ('x y z' per line); writes 'F dF/dx dF/dy dF/dz' per line, "
                "17 significant digits. Exit code 2 and 'stdin:LINE: ...' on a malformed line.");
-  field->add_option("--mesh", field_options.mesh_path, "mesh file")->required();
-  field->add_option("--radius", field_options.radius, "kernel radius R (support of the kernel)")
-      ->required()
+  field->add_option("SCENE", field_options.scene_path,
+                    "a scene file; with --object NAME, the declared convolution object or blob "
+                    "NAME is evaluated (its raw field, placed by its transforms)");
+  field->add_option("--object", field_options.object_name, "the declared object of SCENE");
+  field->add_option("-L,--library", field_options.library_paths,
+                    "also search this folder for the scene's #include and mesh files");
+  field->add_option("--mesh", field_options.mesh_path, "mesh file");
+  field->add_option("--radius", field_options.radius,
+                    "kernel radius R (support of the kernel), with --mesh")
       ->check(kPositive);
   field->add_option("--strength", field_options.strength, "strength s (default 1)")
       ->check(kFinite);
@@ -219,6 +282,7 @@ int main(int argc, char** argv) {
       throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 800x600, got " + slice_size);
     }
     if (*quick) finish_quick_options(quick_arguments);
+    if (*field) check_field_options(field_options, *field);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# Renders scenes with POV-Ray 3.7 and with convray, unmodified, and reports how close the
+# pictures are (PSNR, by idiff) and how long each renderer took (wall clock).
+# Run `bash scripts/compare-povray.sh -h` for the options.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+usage() {
+  cat <<'USAGE'
+usage: bash scripts/compare-povray.sh [OPTIONS] [SCENE.pov ...]
+
+Without scenes: POV-Ray's own blob samples from the Debian package povray-examples
+(scenes/objects/blob.pov, blob1a.pov, blob1b.pov, blob1c.pov). Each is rendered by
+`povray +I... -A -D` and by `convray +I... -A -D` with the same size and thread count,
+without anti-aliasing, and compared with idiff. Goal (issue 4): PSNR >= 40 dB for
+sphere-only blobs, >= 30 dB where cylinder components are involved.
+
+Output (git-ignored): OUT/<name>_povray.png, OUT/<name>_convray.png, logs, OUT/compare.md.
+
+Options:
+  --size WxH      image size (default 800x600)
+  --threads N     threads for both renderers (default: every core)
+  --build DIR     build folder holding convray (default build)
+  --out DIR       output folder (default out/compare)
+  --check         exit 1 unless every scene meets its PSNR goal
+  -h, --help      this message
+USAGE
+}
+
+die() { echo "compare-povray.sh: $*" >&2; exit 1; }
+
+size=800x600
+threads=$(nproc)
+build=build
+out=out/compare
+check=0
+scenes=()
+while (($#)); do
+  case "$1" in
+    -h|--help) usage; exit 0 ;;
+    --size) size=${2:?--size needs WxH}; shift 2 ;;
+    --threads) threads=${2:?--threads needs a number}; shift 2 ;;
+    --build) build=${2:?--build needs a folder}; shift 2 ;;
+    --out) out=${2:?--out needs a folder}; shift 2 ;;
+    --check) check=1; shift ;;
+    -*) usage >&2; die "unknown option '$1'" ;;
+    *) scenes+=("$1"); shift ;;
+  esac
+done
+[[ $size =~ ^([1-9][0-9]*)x([1-9][0-9]*)$ ]] || die "--size: expected WxH, got '$size'"
+width=${BASH_REMATCH[1]}
+height=${BASH_REMATCH[2]}
+samples=/usr/share/povray-3.7/scenes/objects
+if ((${#scenes[@]} == 0)); then
+  for name in blob blob1a blob1b blob1c; do scenes+=("$samples/$name.pov"); done
+fi
+command -v povray >/dev/null || die "povray is not installed (Debian package povray)"
+command -v idiff >/dev/null || die "idiff is not installed (Debian package openimageio-tools)"
+[[ -x $build/convray ]] || die "no $build/convray: build first (cmake --build $build)"
+mkdir -p "$out"
+
+# Wall-clock seconds of a command, its output into a log; fails with the log on error.
+timed() {
+  local log=$1; shift
+  local start end
+  start=$(date +%s.%N)
+  if ! "$@" >"$log" 2>&1; then
+    cat "$log" >&2
+    die "failed: $*"
+  fi
+  end=$(date +%s.%N)
+  awk -v a="$start" -v b="$end" 'BEGIN { printf "%.3f", b - a }'
+}
+
+table="$out/compare.md"
+{
+  echo "| scene | components | PSNR (dB) | goal | POV-Ray (s) | convray (s) | convray / POV-Ray |"
+  echo "| --- | --- | ---: | ---: | ---: | ---: | ---: |"
+} >"$table"
+failed=0
+for scene in "${scenes[@]}"; do
+  [[ -f $scene ]] || die "no scene '$scene'"
+  name=$(basename "$scene" .pov)
+  pov_png="$out/${name}_povray.png"
+  our_png="$out/${name}_convray.png"
+  # POV-Ray resolves includes from the scene's folder; both renderers get the same switches.
+  switches=("+W$width" "+H$height" -A -D "+WT$threads")
+  t_pov=$(timed "$out/${name}_povray.log" povray "+I$scene" "+O$pov_png" "${switches[@]}" \
+    "+L$(dirname "$scene")")
+  t_our=$(timed "$out/${name}_convray.log" "$build/convray" "+I$scene" "+O$our_png" \
+    "${switches[@]}")
+  # idiff exits non-zero whenever the pictures differ at all; only its PSNR line matters here.
+  psnr=$( (idiff -a "$pov_png" "$our_png" 2>&1 || true) | awk '/Peak SNR/ {print $4}')
+  [[ -n $psnr ]] || psnr=inf  # identical images: idiff prints no PSNR
+  if grep -q 'cylinder' "$scene"; then kind="with cylinders"; goal=30; else kind="spheres only"; goal=40; fi
+  ratio=$(awk -v a="$t_our" -v b="$t_pov" 'BEGIN { printf "%.3f", a / b }')
+  ok=$(awk -v p="$psnr" -v g="$goal" 'BEGIN { print (p == "inf" || p + 0 >= g) ? 1 : 0 }')
+  ((ok)) || failed=1
+  printf '| %s | %s | %s | %s | %.2f | %.2f | %.2f |\n' "$name" "$kind" "$psnr" ">= $goal" \
+    "$t_pov" "$t_our" "$ratio" >>"$table"
+done
+echo "Size ${width}x${height}, $threads threads, no anti-aliasing; $(nproc) cores." >>"$table"
+cat "$table"
+if ((check && failed)); then die "a scene is below its PSNR goal"; fi
