@@ -49,6 +49,11 @@ class Shape {
 
   // Whether p is inside the solid (on the boundary: either answer).
   virtual bool inside(const Vec3& p) const = 0;
+
+  // World-space bounds of the points where inside() can be true (CSG and clipped_by bound
+  // what they keep with them): bounds() for closed solids, infinite for half-spaces (plane,
+  // disc) and inverted shapes, empty for open surfaces that have no inside.
+  virtual Box3 inside_bounds() const { return bounds(); }
 };
 
 using ShapePtr = std::unique_ptr<Shape>;

@@ -12,6 +12,9 @@ namespace convray::geometry {
 
 // Builds the traceable form of one object record (and its children). Throws InputError at
 // the object's source location for what cannot be built (a degenerate shape, say).
+// Conventions: CSG children, clipped_by and bounded_by objects are in the object's own space
+// (its transform moves them with it); a child without texture or interior takes its
+// parent's, an object without any gets scene::default_texture() and Interior{}.
 ShapePtr build_shape(const scene::Object& object);
 
 class World {
@@ -33,9 +36,20 @@ class World {
   // Whether p is inside any object (for rays that start inside a refracting solid).
   bool inside_any(const Vec3& p) const;
 
+  // The slow exact twins of first_hit and shadow_crossings: every object asked, no
+  // hierarchy (tests compare them).
+  std::optional<Crossing> first_hit_brute_force(const Ray& ray, double tmin, double tmax,
+                                                TraceStats& stats) const;
+  void shadow_crossings_brute_force(const Ray& ray, double tmin, double tmax,
+                                    std::vector<Crossing>& out, TraceStats& stats) const;
+  size_t object_count() const { return shapes_.size(); }
+
  private:
+  struct Index;  // a BVH over the bounded objects' boxes, and the list of unbounded ones
+
   std::vector<ShapePtr> shapes_;
   std::vector<Box3> bounds_;
+  std::unique_ptr<const Index> index_;
 };
 
 }  // namespace convray::geometry

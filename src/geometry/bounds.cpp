@@ -1,0 +1,47 @@
+#include "geometry/bounds.hpp"
+
+#include <algorithm>
+
+namespace convray::geometry {
+
+Box3 transform_box(const scene::Transform& transform, const Box3& box) {
+  if (is_empty(box)) return box;
+  if (transform.is_identity()) return box;
+  // Arvo's method: each output coordinate is a sum of independent terms m_ij * x_j, each
+  // extreme at one end of [lo_j, hi_j].
+  const glm::dmat4& m = transform.forward();
+  Box3 out;
+  for (int i = 0; i < 3; ++i) {
+    double lo = m[3][i], hi = m[3][i];
+    for (int j = 0; j < 3; ++j) {
+      const double a = m[j][i];  // GLM: column j, row i
+      if (a == 0.0) continue;
+      const double e0 = a * box.lo[j], e1 = a * box.hi[j];
+      lo += std::min(e0, e1);
+      hi += std::max(e0, e1);
+    }
+    out.lo[i] = lo;
+    out.hi[i] = hi;
+  }
+  return out;
+}
+
+bool clip_to_box(const implicit::Ray& ray, const Box3& box, double& tmin, double& tmax) {
+  if (is_empty(box)) return false;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double o = ray.origin[axis], d = ray.direction[axis];
+    if (d == 0.0) {
+      // Parallel to this slab: inside it everywhere or nowhere (avoids 0 * inf).
+      if (o < box.lo[axis] || o > box.hi[axis]) return false;
+      continue;
+    }
+    double t0 = (box.lo[axis] - o) / d, t1 = (box.hi[axis] - o) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    tmin = std::max(tmin, t0);
+    tmax = std::min(tmax, t1);
+    if (tmin > tmax) return false;
+  }
+  return true;
+}
+
+}  // namespace convray::geometry

@@ -1,0 +1,196 @@
+// From scene records to traceable shapes: each object's primitive in its own space, wrapped
+// by its modifiers (inverse, clipped_by, bounded_by) and placed by its transform, with the
+// textures and interiors POV-Ray's inheritance rules give it.
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "geometry/box.hpp"
+#include "geometry/cone.hpp"
+#include "geometry/csg.hpp"
+#include "geometry/disc.hpp"
+#include "geometry/implicit_shape.hpp"
+#include "geometry/modifiers.hpp"
+#include "geometry/plane.hpp"
+#include "geometry/sphere.hpp"
+#include "geometry/torus.hpp"
+#include "geometry/transformed.hpp"
+#include "geometry/triangle_mesh.hpp"
+#include "geometry/world.hpp"
+
+namespace convray::geometry {
+namespace {
+
+// What a CSG parent hands down: a child without a texture (interior) takes its parent's;
+// no_shadow on a parent covers its children.
+struct Inherited {
+  scene::TexturePtr texture;
+  std::optional<scene::Interior> interior;
+  bool no_shadow = false;
+};
+
+bool finite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool finite(double x) { return std::isfinite(x); }
+
+// Throws the message as an error of the scene when `ok` is false.
+void require(bool ok, const char* message) {
+  if (!ok) throw std::invalid_argument(message);
+}
+
+class ShapeBuilder {
+ public:
+  ShapePtr build(const scene::Object& object, const Inherited& parent);
+
+ private:
+  ShapePtr build_primitive(const scene::Object& object, const Inherited& own);
+  SurfaceInfoPtr surface_for(const Inherited& own) const;
+
+  ShapePtr make(const scene::Sphere& s, const Inherited& own) const;
+  ShapePtr make(const scene::Box& b, const Inherited& own) const;
+  ShapePtr make(const scene::Plane& p, const Inherited& own) const;
+  ShapePtr make(const scene::Cylinder& c, const Inherited& own) const;
+  ShapePtr make(const scene::Cone& c, const Inherited& own) const;
+  ShapePtr make(const scene::Torus& t, const Inherited& own) const;
+  ShapePtr make(const scene::Disc& d, const Inherited& own) const;
+  ShapePtr make(const scene::TriangleMesh& m, const Inherited& own) const;
+  ShapePtr make(const scene::Implicit& i, const Inherited& own) const;
+  ShapePtr make(const scene::Csg& c, const Inherited& own);
+
+  // POV-Ray's default texture (black pigment), shared by every object without one.
+  scene::TexturePtr default_texture_ =
+      std::make_shared<const scene::Texture>(scene::default_texture());
+};
+
+SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
+  auto info = std::make_shared<SurfaceInfo>();
+  info->texture = own.texture ? own.texture : default_texture_;
+  info->interior = own.interior.value_or(scene::Interior{});
+  info->no_shadow = own.no_shadow;
+  return info;
+}
+
+ShapePtr ShapeBuilder::make(const scene::Sphere& s, const Inherited& own) const {
+  require(finite(s.center) && finite(s.radius), "sphere: centre and radius must be finite");
+  require(s.radius != 0.0, "sphere: the radius must not be zero");
+  // POV-Ray squares the radius, so a negative one draws the same sphere.
+  return std::make_unique<SphereShape>(s.center, std::abs(s.radius), surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Box& b, const Inherited& own) const {
+  require(finite(b.corner1) && finite(b.corner2), "box: the corners must be finite");
+  return std::make_unique<BoxShape>(b.corner1, b.corner2, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Plane& p, const Inherited& own) const {
+  require(finite(p.normal) && finite(p.distance), "plane: normal and distance must be finite");
+  require(glm::length(p.normal) > 0.0, "plane: the normal must not be zero");
+  return std::make_unique<PlaneShape>(p.normal, p.distance, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Cylinder& c, const Inherited& own) const {
+  require(finite(c.base) && finite(c.cap) && finite(c.radius),
+          "cylinder: end points and radius must be finite");
+  require(glm::length(c.cap - c.base) > 0.0, "cylinder: the end points must differ");
+  require(c.radius > 0.0, "cylinder: the radius must be positive");
+  return std::make_unique<ConeShape>(c.base, c.radius, c.cap, c.radius, c.open, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Cone& c, const Inherited& own) const {
+  require(finite(c.base) && finite(c.cap) && finite(c.base_radius) && finite(c.cap_radius),
+          "cone: end points and radii must be finite");
+  require(glm::length(c.cap - c.base) > 0.0, "cone: the end points must differ");
+  require(c.base_radius >= 0.0 && c.cap_radius >= 0.0, "cone: the radii must not be negative");
+  require(c.base_radius > 0.0 || c.cap_radius > 0.0, "cone: the radii must not both be zero");
+  return std::make_unique<ConeShape>(c.base, c.base_radius, c.cap, c.cap_radius, c.open,
+                                     surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Torus& t, const Inherited& own) const {
+  require(finite(t.major) && finite(t.minor), "torus: the radii must be finite");
+  require(t.major > 0.0 && t.minor > 0.0, "torus: the radii must be positive");
+  return std::make_unique<TorusShape>(t.major, t.minor, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Disc& d, const Inherited& own) const {
+  require(finite(d.center) && finite(d.normal) && finite(d.radius) && finite(d.hole_radius),
+          "disc: centre, normal and radii must be finite");
+  require(glm::length(d.normal) > 0.0, "disc: the normal must not be zero");
+  require(d.radius > 0.0, "disc: the radius must be positive");
+  require(d.hole_radius >= 0.0 && d.hole_radius < d.radius,
+          "disc: the hole radius must be at least 0 and less than the radius");
+  return std::make_unique<DiscShape>(d.center, d.normal, d.radius, d.hole_radius, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::TriangleMesh& m, const Inherited& own) const {
+  // The object's surface first, then one per texture of the mesh (with the object's interior).
+  std::vector<SurfaceInfoPtr> surfaces{surface_for(own)};
+  for (const scene::TexturePtr& texture : m.textures) {
+    Inherited face = own;
+    if (texture) face.texture = texture;
+    surfaces.push_back(surface_for(face));
+  }
+  for (const Vec3& v : m.vertices) require(finite(v), "mesh: vertices must be finite");
+  return std::make_unique<TriangleMeshShape>(m, std::move(surfaces));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Implicit& i, const Inherited& own) const {
+  return std::make_unique<ImplicitShape>(i, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Csg& c, const Inherited& own) {
+  std::vector<ShapePtr> children;
+  for (const scene::ObjectPtr& child : c.children) {
+    if (child) children.push_back(build(*child, own));
+  }
+  return std::make_unique<CsgShape>(c.operation, std::move(children));
+}
+
+ShapePtr ShapeBuilder::build_primitive(const scene::Object& object, const Inherited& own) {
+  try {
+    return std::visit([&](const auto& record) { return make(record, own); }, object.shape);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(object.loc, e.what());
+  }
+}
+
+ShapePtr ShapeBuilder::build(const scene::Object& object, const Inherited& parent) {
+  Inherited own;
+  own.texture = object.texture ? object.texture : parent.texture;
+  own.interior = object.interior ? object.interior : parent.interior;
+  own.no_shadow = object.no_shadow || parent.no_shadow;
+
+  ShapePtr shape = build_primitive(object, own);
+  if (object.inverse) shape = std::make_unique<InvertedShape>(std::move(shape));
+  // Clipping and bounding objects live in the object's own space and move with it.
+  if (!object.clipped_by.empty()) {
+    std::vector<ShapePtr> clips;
+    for (const scene::ObjectPtr& clip : object.clipped_by) {
+      if (clip) clips.push_back(build(*clip, own));
+    }
+    shape = std::make_unique<ClippedShape>(std::move(shape), std::move(clips));
+  }
+  if (object.bounded_by) {
+    const ShapePtr bound = build(*object.bounded_by, own);
+    shape = std::make_unique<BoundedShape>(std::move(shape), *bound);
+  }
+  if (!object.transform.is_identity()) {
+    const double det = glm::determinant(glm::dmat3(object.transform.forward()));
+    const double inverse_det = glm::determinant(glm::dmat3(object.transform.backward()));
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det) || !std::isfinite(inverse_det)) {
+      throw InputError(object.loc, "the object's transform is singular (a scale by zero?)");
+    }
+    shape = std::make_unique<TransformedShape>(std::move(shape), object.transform);
+  }
+  return shape;
+}
+
+}  // namespace
+
+ShapePtr build_shape(const scene::Object& object) {
+  ShapeBuilder builder;
+  return builder.build(object, Inherited{});
+}
+
+}  // namespace convray::geometry

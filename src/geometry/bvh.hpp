@@ -1,0 +1,100 @@
+#pragma once
+// A bounding volume hierarchy over boxes (mesh triangles, a world's objects), built with
+// binned surface-area heuristic splits. Traversal visits the primitives of the leaves whose
+// boxes the ray meets, nearer child first, and lets a closest-hit query narrow the ray as it
+// goes. The slow exact twin is a loop over every primitive; tests compare the two.
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "geometry/bounds.hpp"
+#include "implicit/ray.hpp"
+
+namespace convray::geometry {
+
+class Bvh {
+ public:
+  Bvh() = default;
+  // Boxes must be non-empty and finite.
+  explicit Bvh(std::span<const Box3> boxes, int max_leaf_size = 4);
+
+  bool empty() const { return nodes_.empty(); }
+  Box3 bounds() const { return empty() ? Box3{} : nodes_.front().box; }
+  size_t node_count() const { return nodes_.size(); }
+  size_t memory_bytes() const {
+    return nodes_.capacity() * sizeof(Node) + order_.capacity() * sizeof(uint32_t);
+  }
+
+  // Calls visit(primitive, tmax) for every primitive of every leaf whose box meets the ray
+  // within [tmin, tmax]; visit may lower tmax (double&) to prune what follows.
+  template <class Visit>
+  void traverse(const implicit::Ray& ray, double tmin, double& tmax, Visit&& visit) const;
+
+ private:
+  struct Node {
+    Box3 box;
+    uint32_t offset = 0;  // leaf: first entry of order_; interior: index of the second child
+    uint16_t count = 0;   // leaf: its primitives; 0: interior (the first child follows it)
+    uint8_t axis = 0;     // interior: the split axis
+  };
+  struct Slabs;  // the ray's per-axis reciprocal directions
+
+  void build(std::span<const Box3> boxes, std::vector<Vec3>& centroids, uint32_t node,
+             uint32_t begin, uint32_t end, int max_leaf_size, int depth);
+  uint32_t split(std::span<const Box3> boxes, const std::vector<Vec3>& centroids,
+                 const Box3& bounds, uint32_t begin, uint32_t end, int& axis);
+
+  std::vector<Node> nodes_;
+  std::vector<uint32_t> order_;
+};
+
+// Whether the ray meets `box` within [tmin, tmax], using the reciprocal direction.
+inline bool ray_meets_box(const Vec3& origin, const Vec3& inverse_direction, const Box3& box,
+                          double tmin, double tmax) {
+  for (int axis = 0; axis < 3; ++axis) {
+    const double inverse = inverse_direction[axis];
+    if (std::isinf(inverse)) {
+      // Parallel to the slab: inside it everywhere or nowhere (avoids 0 * inf).
+      if (origin[axis] < box.lo[axis] || origin[axis] > box.hi[axis]) return false;
+      continue;
+    }
+    double t0 = (box.lo[axis] - origin[axis]) * inverse;
+    double t1 = (box.hi[axis] - origin[axis]) * inverse;
+    if (t0 > t1) std::swap(t0, t1);
+    tmin = t0 > tmin ? t0 : tmin;
+    tmax = t1 < tmax ? t1 : tmax;
+    if (tmin > tmax) return false;
+  }
+  return true;
+}
+
+template <class Visit>
+void Bvh::traverse(const implicit::Ray& ray, double tmin, double& tmax, Visit&& visit) const {
+  if (nodes_.empty()) return;
+  const Vec3 inverse = 1.0 / ray.direction;
+  uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!ray_meets_box(ray.origin, inverse, node.box, tmin, tmax)) continue;
+    if (node.count > 0) {
+      for (uint32_t i = node.offset; i < node.offset + node.count; ++i) visit(order_[i], tmax);
+      continue;
+    }
+    // Push the far child first so that the near one is visited first.
+    const auto index = uint32_t(&node - nodes_.data());
+    const uint32_t first = index + 1, second = node.offset;
+    if (ray.direction[node.axis] < 0.0) {
+      stack[top++] = first;
+      stack[top++] = second;
+    } else {
+      stack[top++] = second;
+      stack[top++] = first;
+    }
+  }
+}
+
+}  // namespace convray::geometry

@@ -1,0 +1,57 @@
+#pragma once
+// POV-Ray's `blob` and our `convolution` object: the surface F = T of a ConvolutionSurface
+// in the object's own space. Crossings are the surface's roots (each polished on the exact
+// field), normals -grad F / |grad F|. Inside is F >= T; for a blob POV-Ray's F > T - 1e-6.
+//
+// Per-component textures: POV-Ray blends the textures of the components by their share of
+// the field at the point. We simplify to the dominant one: a crossing takes the surface
+// description of the component contributing most to the field there (components without a
+// texture of their own count as the object's).
+#include <vector>
+
+#include "geometry/primitive.hpp"
+#include "implicit/convolution_surface.hpp"
+#include "scene/object.hpp"
+
+namespace convray::geometry {
+
+class ImplicitShape final : public Shape {
+ public:
+  // Throws std::invalid_argument for what ConvolutionSurface refuses (a radius that is not
+  // positive, a threshold that is not positive) and for component textures that name no
+  // component.
+  ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surface);
+
+  Box3 bounds() const override;
+  void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
+                 TraceStats& stats) const override;
+  std::optional<Crossing> first_crossing(const Ray& ray, double tmin, double tmax,
+                                         TraceStats& stats) const override;
+  bool inside(const Vec3& p) const override;
+
+  const implicit::ConvolutionSurface& surface() const { return surface_; }
+  // The surface description a crossing at p takes (the dominant component's).
+  const SurfaceInfo* surface_at(const Vec3& p) const;
+
+ private:
+  // One component of the object, kept for the texture lookup: its field at p, with the
+  // strength applied.
+  struct Component {
+    scene::Implicit::Kind kind;
+    size_t index;  // in that kind's vector of components_
+    const SurfaceInfo* surface;
+  };
+  double contribution(const Component& component, const Vec3& p) const;
+  void index_components(const scene::Implicit& record);
+
+  implicit::ConvolutionSurface surface_;
+  bool is_blob_;
+  SurfaceInfoPtr object_surface_;
+  // Only when some component has its own texture:
+  implicit::ConvolutionObject components_;
+  std::vector<Component> textured_lookup_;
+  std::vector<SurfaceInfoPtr> component_surfaces_;
+  std::vector<Box3> mesh_reach_;  // each mesh component's bounds grown by its radius
+};
+
+}  // namespace convray::geometry

@@ -1,0 +1,112 @@
+#include "geometry/polynomial.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace convray::geometry {
+namespace {
+
+// The one root of a polynomial monotone on [a, b] whose ends differ in sign: Newton steps
+// from the bracket's better end, falling back to bisection whenever a step leaves the
+// bracket or fails to halve it.
+double monotone_root(std::span<const double> c, std::span<const double> slope, double a, double b,
+                     double fa) {
+  double x = 0.5 * (a + b), width_before = b - a;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double fx = evaluate_polynomial(c, x);
+    if (fx == 0.0) return x;
+    // Keep f(a) of the sign of fa and f(b) of the other.
+    if ((fx < 0.0) == (fa < 0.0)) {
+      a = x;
+    } else {
+      b = x;
+    }
+    const double dx = evaluate_polynomial(slope, x);
+    double next = dx != 0.0 ? x - fx / dx : a;
+    const double width = b - a;
+    if (!(next > a && next < b) || width > 0.5 * width_before) next = a + 0.5 * width;
+    width_before = width;
+    if (!(next > a && next < b)) break;  // the bracket is as small as doubles allow
+    x = next;
+  }
+  return std::abs(evaluate_polynomial(c, a)) < std::abs(evaluate_polynomial(c, b)) ? a : b;
+}
+
+int roots_of_degree(std::span<const double> c, double lo, double hi, double* out) {
+  int degree = int(c.size()) - 1;
+  while (degree > 0 && c[size_t(degree)] == 0.0) --degree;
+  if (degree <= 0) return 0;
+  c = c.first(size_t(degree) + 1);
+  if (degree == 1) {
+    const double x = -c[0] / c[1];
+    if (x >= lo && x <= hi) {
+      out[0] = x;
+      return 1;
+    }
+    return 0;
+  }
+  // Critical points: the derivative's roots split [lo, hi] into monotone pieces.
+  double slope[kMaxPolynomialDegree];
+  for (int i = 1; i <= degree; ++i) slope[i - 1] = double(i) * c[size_t(i)];
+  const std::span<const double> derivative(slope, size_t(degree));
+  double ends[kMaxPolynomialDegree + 1];
+  int end_count = 0;
+  ends[end_count++] = lo;
+  end_count += roots_of_degree(derivative, lo, hi, ends + end_count);
+  ends[end_count++] = hi;
+
+  // One root at most per monotone piece; exact zeros at the pieces' ends count once. (The
+  // count never exceeds the degree, even if rounding makes more ends exactly zero.)
+  int count = 0;
+  auto add = [&](double x) {
+    if (count < degree && (count == 0 || out[count - 1] != x)) out[count++] = x;
+  };
+  double f_left = evaluate_polynomial(c, lo);
+  for (int k = 0; k + 1 < end_count; ++k) {
+    const double a = ends[k], b = ends[k + 1];
+    const double f_right = evaluate_polynomial(c, b);
+    if (f_left == 0.0) {
+      add(a);
+    } else if (f_right != 0.0 && (f_left < 0.0) != (f_right < 0.0) && b > a) {
+      add(monotone_root(c, derivative, a, b, f_left));
+    }
+    f_left = f_right;
+  }
+  if (f_left == 0.0) add(hi);
+  return count;
+}
+
+}  // namespace
+
+double evaluate_polynomial(std::span<const double> c, double x) {
+  double value = 0.0;
+  for (size_t i = c.size(); i-- > 0;) value = value * x + c[i];
+  return value;
+}
+
+int polynomial_roots(std::span<const double> c, double lo, double hi, double* out) {
+  if (c.size() > size_t(kMaxPolynomialDegree) + 1 || !(lo <= hi)) return 0;
+  return roots_of_degree(c, lo, hi, out);
+}
+
+int quadratic_roots(double a, double half_b, double c, double out[2]) {
+  if (a == 0.0) {
+    if (half_b == 0.0) return 0;
+    out[0] = -c / (2.0 * half_b);
+    return 1;
+  }
+  const double discriminant = half_b * half_b - a * c;
+  if (discriminant < 0.0) return 0;
+  // q has the sign of half_b so that no digits cancel; the roots are q / a and c / q.
+  const double q = -(half_b + std::copysign(std::sqrt(discriminant), half_b));
+  if (q == 0.0) {
+    out[0] = out[1] = 0.0;  // half_b = c = 0: the double root 0
+    return 2;
+  }
+  const double r0 = q / a, r1 = c / q;
+  out[0] = std::min(r0, r1);
+  out[1] = std::max(r0, r1);
+  return 2;
+}
+
+}  // namespace convray::geometry

@@ -1,0 +1,33 @@
+#pragma once
+// An object placed by its transform: rays go into the object's own space (direction
+// renormalised, distances scaled back), normals come out by the inverse transpose.
+#include "geometry/shape.hpp"
+#include "scene/transform.hpp"
+
+namespace convray::geometry {
+
+class TransformedShape final : public Shape {
+ public:
+  // `transform` maps the child's space to this shape's; it must be invertible.
+  TransformedShape(ShapePtr child, const scene::Transform& transform);
+
+  Box3 bounds() const override;
+  void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
+                 TraceStats& stats) const override;
+  std::optional<Crossing> first_crossing(const Ray& ray, double tmin, double tmax,
+                                         TraceStats& stats) const override;
+  bool inside(const Vec3& p) const override;
+  Box3 inside_bounds() const override;
+
+ private:
+  // The ray in the child's space with a unit direction; `stretch` is how much longer the
+  // direction was there: t_child = t * stretch.
+  Ray child_ray(const Ray& ray, double& stretch) const;
+  void to_placed_space(Crossing& crossing, double stretch) const;
+
+  ShapePtr child_;
+  scene::Transform transform_;
+  Box3 bounds_, inside_bounds_;
+};
+
+}  // namespace convray::geometry

@@ -1,0 +1,128 @@
+#include "geometry/world.hpp"
+
+#include <algorithm>
+
+#include "geometry/bounds.hpp"
+#include "geometry/bvh.hpp"
+
+namespace convray::geometry {
+namespace {
+
+// Object boxes grow by this fraction of their size (and a little absolutely) before they go
+// into the hierarchy, so that rounding in their computation never culls a grazing hit.
+constexpr double kBoxPadding = 1e-9;
+
+Box3 padded(const Box3& box) {
+  const Vec3 margin =
+      kBoxPadding * (box.hi - box.lo + glm::abs(box.lo) + glm::abs(box.hi)) + 1e-300;
+  return Box3{box.lo - margin, box.hi + margin};
+}
+
+void sort_by_distance(std::vector<Crossing>& crossings, size_t first) {
+  std::stable_sort(crossings.begin() + std::ptrdiff_t(first), crossings.end(),
+                   [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
+}
+
+// Drops the crossings of surfaces that cast no shadow (a no_shadow child of a CSG).
+void drop_shadowless(std::vector<Crossing>& crossings, size_t first) {
+  const auto removed =
+      std::remove_if(crossings.begin() + std::ptrdiff_t(first), crossings.end(),
+                     [](const Crossing& c) { return c.surface && c.surface->no_shadow; });
+  crossings.erase(removed, crossings.end());
+}
+
+}  // namespace
+
+struct World::Index {
+  Bvh bvh;                         // over the bounded objects' padded boxes
+  std::vector<size_t> bounded;     // BVH primitive -> object
+  std::vector<size_t> unbounded;   // objects always asked (planes, inverted solids, ...)
+  std::vector<Box3> inside_boxes;  // each object's inside_bounds()
+  Box3 bounds;                     // the union of the finite bounds
+};
+
+World::World(const scene::Scene& scene) {
+  auto index = std::make_unique<Index>();
+  std::vector<Box3> boxes;
+  for (const scene::ObjectPtr& object : scene.objects) {
+    if (!object) continue;
+    ShapePtr shape = build_shape(*object);
+    const Box3 box = shape->bounds();
+    const size_t id = shapes_.size();
+    index->inside_boxes.push_back(shape->inside_bounds());
+    bounds_.push_back(box);
+    shapes_.push_back(std::move(shape));
+    if (is_empty(box)) continue;  // no surface at all: never hit
+    if (is_finite(box)) {
+      index->bounded.push_back(id);
+      boxes.push_back(padded(box));
+      index->bounds = hull(index->bounds, box);
+    } else {
+      index->unbounded.push_back(id);
+    }
+  }
+  index->bvh = Bvh(boxes, 2);
+  index_ = std::move(index);
+}
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+
+Box3 World::bounds() const { return index_->bounds; }
+
+std::optional<Crossing> World::first_hit(const Ray& ray, double tmin, double tmax,
+                                         TraceStats& stats) const {
+  std::optional<Crossing> nearest;
+  double reach = tmax;
+  auto ask = [&](size_t id, double& limit) {
+    if (auto c = shapes_[id]->first_crossing(ray, tmin, limit, stats)) {
+      nearest = c;
+      limit = c->t;  // only nearer objects matter now
+    }
+  };
+  for (size_t id : index_->unbounded) ask(id, reach);
+  index_->bvh.traverse(ray, tmin, reach,
+                       [&](uint32_t k, double& limit) { ask(index_->bounded[k], limit); });
+  return nearest;
+}
+
+std::optional<Crossing> World::first_hit_brute_force(const Ray& ray, double tmin, double tmax,
+                                                     TraceStats& stats) const {
+  std::optional<Crossing> nearest;
+  for (const ShapePtr& shape : shapes_) {
+    if (auto c = shape->first_crossing(ray, tmin, tmax, stats)) {
+      nearest = c;
+      tmax = c->t;
+    }
+  }
+  return nearest;
+}
+
+void World::shadow_crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
+                             TraceStats& stats) const {
+  const size_t first = out.size();
+  for (size_t id : index_->unbounded) shapes_[id]->crossings(ray, tmin, tmax, out, stats);
+  double reach = tmax;
+  index_->bvh.traverse(ray, tmin, reach, [&](uint32_t k, double&) {
+    shapes_[index_->bounded[k]]->crossings(ray, tmin, tmax, out, stats);
+  });
+  drop_shadowless(out, first);
+  sort_by_distance(out, first);
+}
+
+void World::shadow_crossings_brute_force(const Ray& ray, double tmin, double tmax,
+                                         std::vector<Crossing>& out, TraceStats& stats) const {
+  const size_t first = out.size();
+  for (const ShapePtr& shape : shapes_) shape->crossings(ray, tmin, tmax, out, stats);
+  drop_shadowless(out, first);
+  sort_by_distance(out, first);
+}
+
+bool World::inside_any(const Vec3& p) const {
+  for (size_t id = 0; id < shapes_.size(); ++id) {
+    if (contains(index_->inside_boxes[id], p) && shapes_[id]->inside(p)) return true;
+  }
+  return false;
+}
+
+}  // namespace convray::geometry
