@@ -7,6 +7,7 @@
 // same bytes.
 #include "render/camera.hpp"
 #include "render/film.hpp"
+#include "render/render_result.hpp"
 #include "render/render_stats.hpp"
 #include "render/shading.hpp"
 #include "render/traceable.hpp"
@@ -14,11 +15,6 @@
 namespace convray::render {
 
 class Progress;
-
-struct RenderResult {
-  Film film;
-  RenderStats stats;
-};
 
 // Renders `scene` seen by `camera`. `progress`, if given, hears of every pixel done and is
 // finished at the end. Tiles are `tile_size` pixels square: big enough to amortise the

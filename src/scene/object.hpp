@@ -104,6 +104,8 @@ struct Object {
   bool inverse = false;     // inside and outside swapped
   bool no_shadow = false;   // casts no shadow
   bool hollow = false;
+  // clipped_by and bounded_by objects are in the object's own space, like a CSG's children:
+  // `transform` places them with the object.
   std::vector<ObjectPtr> clipped_by;  // keep only the parts inside all of these
   ObjectPtr bounded_by;               // a bound the renderer may use; never changes the image
   SourceLoc loc;            // where the scene declared it

@@ -49,7 +49,8 @@ struct Light {
 
 // Gradient pigments on the infinite sphere seen by rays that leave the scene.
 struct SkySphere {
-  std::vector<Pigment> pigments;  // layered: later ones seen through earlier transparent parts
+  std::vector<Pigment> pigments;  // layered as POV-Ray: the last on top, earlier ones seen
+                                  // through its transparent parts
   Transform transform;
 };
 

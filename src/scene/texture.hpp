@@ -34,6 +34,8 @@ enum class Pattern {
   dents,
 };
 
+// A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
+// colours); two in a row with the same value make a sharp step.
 struct ColorMapEntry {
   double value = 0.0;  // in [0, 1], ascending
   Color color;
@@ -77,6 +79,9 @@ struct Finish {
   double roughness = 0.05;
   Vec3 reflection{0.0};  // constant reflection colour (`reflection r` or `reflection rgb`)
   double metallic = 0.0; // 0..1: highlights (and reflection) tinted by the pigment
+  // POV-Ray 3.7's `emission`: light the surface gives off itself, like ambient but not
+  // multiplied by the global ambient_light.
+  Vec3 emission{0.0};
 };
 
 struct Normal {

@@ -1,0 +1,199 @@
+#include "render/integrator.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#include "render/area_light.hpp"
+#include "render/atmosphere.hpp"
+#include "render/finish.hpp"
+#include "render/lights.hpp"
+#include "render/normal_perturbation.hpp"
+#include "render/pigment.hpp"
+#include "render/sample_hash.hpp"
+#include "render/shadows.hpp"
+
+namespace convray::render {
+
+using geometry::Crossing;
+using geometry::SurfaceInfo;
+using implicit::Ray;
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double max_channel(const Vec3& v) { return std::max({v.r, v.g, v.b}); }
+
+// Shades surfaces that came without any (never after World's build; kept for safety).
+const scene::Texture& fallback_texture() {
+  static const scene::Texture texture = scene::default_texture();
+  return texture;
+}
+
+Vec3 mirrored(const Vec3& direction, const Vec3& normal) {
+  return direction - 2.0 * glm::dot(direction, normal) * normal;
+}
+
+// Snell's law for a unit direction through a unit normal facing against it, with
+// eta = n_from / n_to; false on total internal reflection.
+bool refracted(const Vec3& direction, const Vec3& normal, double eta, Vec3& out) {
+  const double cos_in = -glm::dot(direction, normal);
+  const double k = 1.0 - eta * eta * (1.0 - cos_in * cos_in);
+  if (k < 0.0) return false;
+  out = glm::normalize(eta * direction + (eta * cos_in - std::sqrt(k)) * normal);
+  return true;
+}
+
+// A reproducible seed for the jittered sample points of an area light seen from `point`.
+uint64_t area_jitter_seed(uint64_t seed, size_t light, const Vec3& point) {
+  return hash_values(std::bit_cast<uint64_t>(point.x), std::bit_cast<uint64_t>(point.y),
+                     std::bit_cast<uint64_t>(point.z), hash_values(seed, light));
+}
+
+}  // namespace
+
+struct Integrator::HitPoint {
+  Vec3 point;
+  Vec3 view;             // the incoming ray's direction
+  Vec3 normal;           // shading normal, unit, facing the viewer
+  bool entering = true;  // the ray crosses into the solid (it met the outside of the surface)
+  const SurfaceInfo* surface = nullptr;
+  const scene::Finish* finish = nullptr;
+  scene::Color pigment;
+};
+
+Integrator::Integrator(const scene::Scene& scene, const geometry::World& world,
+                       const IntegratorSettings& settings)
+    : scene_(scene), world_(world), settings_(settings) {}
+
+Vec3 Integrator::trace_camera_ray(const Ray& ray, RenderStats& stats) const {
+  ++stats.camera_rays;
+  return trace(ray, RayState{}, 0.0, stats);
+}
+
+Vec3 Integrator::trace(const Ray& ray, const RayState& state, double tmin,
+                       RenderStats& stats) const {
+  ++stats.queries;
+  const std::optional<Crossing> crossing = world_.first_hit(ray, tmin, kInfinity, stats.trace);
+  if (!crossing) return apply_fogs(scene_.fogs, ray, kInfinity, sky_color(scene_, ray.direction));
+  if (state.level == 1) ++stats.hits;
+  const Vec3 color = shade(ray, *crossing, state, stats);
+  return apply_fogs(scene_.fogs, ray, crossing->t, color);
+}
+
+Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState& state,
+                       RenderStats& stats) const {
+  const scene::Texture& texture = crossing.surface && crossing.surface->texture
+                                      ? *crossing.surface->texture
+                                      : fallback_texture();
+  HitPoint hit;
+  hit.point = ray.at(crossing.t);
+  hit.view = ray.direction;
+  hit.surface = crossing.surface;
+  hit.finish = &texture.finish;
+  hit.pigment = evaluate_pigment(texture.pigment, hit.point);
+  // Bumps tilt the outward normal; then both turn to face the viewer (the inside of a solid
+  // seen from within is lit like an outside).
+  hit.entering = glm::dot(ray.direction, crossing.normal) < 0.0;
+  const Vec3 shading = perturb_normal(texture.normal, hit.point, crossing.normal);
+  hit.normal = hit.entering ? shading : -shading;
+
+  const scene::Color& pigment = hit.pigment;
+  Vec3 color = direct_light(hit, 1.0 - pigment.filter - pigment.transmit, stats);
+  if (texture.finish.reflection != Vec3(0.0)) color += reflected_light(hit, state, stats);
+  if (!pigment.opaque()) {
+    const Vec3 factor = pigment.filter * pigment.rgb + Vec3(pigment.transmit);
+    color += factor * transmitted_light(hit, factor, state, stats);
+  }
+  return color;
+}
+
+Vec3 Integrator::direct_light(const HitPoint& hit, double opacity, RenderStats& stats) const {
+  const scene::Finish& finish = *hit.finish;
+  Vec3 diffuse = ambient_term(finish, scene_.settings.ambient_light, hit.pigment.rgb);
+  Vec3 highlights(0.0);
+  for (size_t index = 0; index < scene_.lights.size(); ++index) {
+    const std::optional<LightArrival> arrival = light_arrival(scene_.lights[index], hit.point);
+    // A light behind the surface adds nothing: no shadow ray needed.
+    if (!arrival || !(glm::dot(hit.normal, arrival->to_light) > 0.0)) continue;
+    const Vec3 visible =
+        light_visibility(index, hit.point, arrival->to_light, arrival->distance, stats);
+    if (visible == Vec3(0.0)) continue;
+    const LightContribution lit = light_contribution(finish, hit.pigment.rgb, hit.normal, hit.view,
+                                                     arrival->to_light, arrival->color * visible);
+    diffuse += lit.diffuse;
+    highlights += lit.highlight;
+  }
+  return opacity * diffuse + highlights;
+}
+
+Vec3 Integrator::light_visibility(size_t index, const Vec3& point, const Vec3& to_light,
+                                  double distance, RenderStats& stats) const {
+  const scene::Light& light = scene_.lights[index];
+  if (light.shadowless) return Vec3(1.0);
+  const double offset = settings_.ray_offset;
+  if (!light.area || light.kind == scene::Light::Kind::parallel) {
+    return shadow_transmittance(world_, Ray{point, to_light}, offset, distance - offset, offset,
+                                stats);
+  }
+  // An area light: POV-Ray's adaptive average over its grid of lights (area_light.hpp).
+  const scene::AreaLight& area = *light.area;
+  const std::vector<Vec3> lights =
+      area_light_points(light, point, area_jitter_seed(settings_.seed, index, point));
+  const int size1 = std::max(area.size1, 1), size2 = std::max(area.size2, 1);
+  return area_light_visibility(size1, size2, area.adaptive, [&](int i, int j) {
+    const Vec3 toward = lights[size_t(j) * size_t(size1) + size_t(i)] - point;
+    const double length = glm::length(toward);
+    if (!(length > offset)) return Vec3(1.0);
+    return shadow_transmittance(world_, Ray{point, toward / length}, offset, length - offset,
+                                offset, stats);
+  });
+}
+
+bool Integrator::may_trace(const RayState& state, double factor, double& child_weight) const {
+  if (state.level >= scene_.settings.max_trace_level) return false;
+  child_weight = state.weight * factor;
+  return child_weight >= scene_.settings.adc_bailout && child_weight > 0.0;
+}
+
+Vec3 Integrator::reflected_light(const HitPoint& hit, const RayState& state,
+                                 RenderStats& stats) const {
+  const Vec3& reflection = hit.finish->reflection;
+  double weight = 0.0;
+  if (!may_trace(state, max_channel(reflection), weight)) return Vec3(0.0);
+  ++stats.reflected_rays;
+  const RayState child{state.level + 1, weight, state.medium};
+  const Ray ray{hit.point, mirrored(hit.view, hit.normal)};
+  return reflection * trace(ray, child, settings_.ray_offset, stats);
+}
+
+Vec3 Integrator::transmitted_light(const HitPoint& hit, const Vec3& factor, const RayState& state,
+                                   RenderStats& stats) const {
+  double weight = 0.0;
+  if (!may_trace(state, max_channel(factor), weight)) return Vec3(0.0);
+  const double ior_from = state.medium.ior();
+  const MediumStack beyond =
+      hit.entering
+          ? state.medium.entered(hit.surface, hit.surface ? hit.surface->interior.ior : 1.0)
+          : state.medium.left(hit.surface);
+  const double ior_to = beyond.ior();
+
+  RayState child{state.level, weight, beyond};
+  Vec3 direction = hit.view;
+  if (ior_from != ior_to) {
+    child.level = state.level + 1;  // a bent ray is a new level; a straight one is not
+    if (!refracted(hit.view, hit.normal, ior_from / ior_to, direction)) {
+      // Total internal reflection: the light stays in the medium it came from.
+      direction = mirrored(hit.view, hit.normal);
+      child.medium = state.medium;
+      ++stats.reflected_rays;
+      return trace(Ray{hit.point, direction}, child, settings_.ray_offset, stats);
+    }
+  }
+  ++stats.refracted_rays;
+  return trace(Ray{hit.point, direction}, child, settings_.ray_offset, stats);
+}
+
+}  // namespace convray::render

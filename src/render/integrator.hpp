@@ -1,0 +1,75 @@
+#pragma once
+// The Whitted integrator: the colour seen along a ray, with POV-Ray 3.7's lighting model
+// (finish.hpp), its lights (lights.hpp) and shadows (shadows.hpp), mirror reflection,
+// refraction and transparency, fog and the sky.
+//
+// At a hit, with pigment colour P (filter f, transmit t) and the normal turned to the viewer:
+//   colour = (1 - f - t) (ambient + sum of diffuse) + sum of highlights
+//          + reflection * trace(mirrored ray)
+//          + (f P + t) * trace(transmitted ray)
+// (measured against POV-Ray 3.7: see finish.hpp). The transmitted ray bends by Snell's law
+// when the ior changes (entering a solid: its interior's ior; leaving it: the ior of the solid
+// around, 1 outside everything) and reflects when totally internally reflected.
+//
+// Recursion, as POV-Ray 3.7 does it (measured with stacks of mirrors and transparent planes):
+// a camera ray has level 1; a secondary ray is traced only while its parent's level is below
+// global max_trace_level; reflected and bent rays get the next level, a transmitted ray that
+// does not bend (same ior on both sides) keeps its parent's level. A ray's weight is the
+// product of the largest channel of every factor along its path; rays lighter than
+// adc_bailout are not traced. Untraced rays contribute black.
+#include <cstdint>
+
+#include "geometry/world.hpp"
+#include "render/medium_stack.hpp"
+#include "render/render_stats.hpp"
+#include "scene/scene.hpp"
+#include "util/math.hpp"
+
+namespace convray::render {
+
+struct IntegratorSettings {
+  // Secondary rays (shadow, reflected, transmitted) ignore crossings closer than this to
+  // their origin, so they do not find the surface they leave. Scene units; > 0.
+  double ray_offset = 1e-6;
+  uint64_t seed = 0;  // jittered area lights: their sample points hash this with the point
+};
+
+class Integrator {
+ public:
+  // Keeps references: the scene and world must outlive the integrator.
+  Integrator(const scene::Scene& scene, const geometry::World& world,
+             const IntegratorSettings& settings);
+
+  // The colour seen along a camera ray (unit direction).
+  Vec3 trace_camera_ray(const implicit::Ray& ray, RenderStats& stats) const;
+
+ private:
+  struct RayState {
+    int level = 1;
+    double weight = 1.0;
+    MediumStack medium;
+  };
+  // What shading needs to know about the hit point.
+  struct HitPoint;
+
+  Vec3 trace(const implicit::Ray& ray, const RayState& state, double tmin,
+             RenderStats& stats) const;
+  Vec3 shade(const implicit::Ray& ray, const geometry::Crossing& crossing, const RayState& state,
+             RenderStats& stats) const;
+  // Ambient, diffuse and highlights of all lights; `opacity` scales ambient and diffuse.
+  Vec3 direct_light(const HitPoint& hit, double opacity, RenderStats& stats) const;
+  // The fraction of light `index` that reaches the point (shadows, area lights).
+  Vec3 light_visibility(size_t index, const Vec3& point, const Vec3& to_light, double distance,
+                        RenderStats& stats) const;
+  Vec3 reflected_light(const HitPoint& hit, const RayState& state, RenderStats& stats) const;
+  Vec3 transmitted_light(const HitPoint& hit, const Vec3& factor, const RayState& state,
+                         RenderStats& stats) const;
+  // Whether a child ray of this weight factor may be traced from `state`; its weight.
+  bool may_trace(const RayState& state, double factor, double& child_weight) const;
+
+  const scene::Scene& scene_;
+  const geometry::World& world_;
+  IntegratorSettings settings_;
+};
+
+}  // namespace convray::render

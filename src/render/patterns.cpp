@@ -1,0 +1,152 @@
+#include "render/patterns.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "render/noise.hpp"
+#include "render/sample_hash.hpp"
+
+namespace convray::render {
+
+using scene::Pattern;
+
+namespace {
+
+// POV-Ray floors checker coordinates after adding a tolerance of this order: a plane at
+// y = 0 then shows the colour of y = +0 whatever the rounding of its hit points (measured
+// bounds: pattern y = -1e-10 keeps the colour of y = 0, y = -1e-9 flips it).
+constexpr double kCheckerTolerance = 5e-10;
+
+// Wave sources of ripples and waves: fixed points in the unit cube around the origin.
+constexpr int kWaveSources = 10;
+
+const std::array<Vec3, kWaveSources>& wave_sources() {
+  static const std::array<Vec3, kWaveSources> sources = [] {
+    std::array<Vec3, kWaveSources> s;
+    for (int k = 0; k < kWaveSources; ++k) {
+      for (int axis = 0; axis < 3; ++axis) {
+        s[k][axis] = unit_from_hash(hash_values(0x3a7e5, uint64_t(k), uint64_t(axis))) - 0.5;
+      }
+    }
+    return s;
+  }();
+  return sources;
+}
+
+double fract(double v) { return v - std::floor(v); }
+
+// POV-Ray's ramp wave: values already in [0, 1] stay (a pattern's 1 is not its 0), others
+// wrap around.
+double wrap_to_unit(double v) { return v >= 0.0 && v <= 1.0 ? v : fract(v); }
+
+// Ripples and waves take frequency and phase inside their sines, as POV-Ray's do: the
+// frequency sets the rings' spacing, the phase moves them outwards.
+bool shapes_its_own_wave(Pattern pattern) {
+  return pattern == Pattern::ripples || pattern == Pattern::waves;
+}
+
+double ripples(const Vec3& q, double frequency, double phase) {
+  double sum = 0.0;
+  for (const Vec3& source : wave_sources()) {
+    sum += std::sin(2.0 * kPi * (glm::length(q - source) * frequency + phase));
+  }
+  return std::clamp(0.5 + 0.5 * sum / std::sqrt(double(kWaveSources)), 0.0, 1.0);
+}
+
+double waves(const Vec3& q, double frequency, double phase) {
+  double sum = 0.0;
+  for (const Vec3& source : wave_sources()) {
+    const double d = glm::length(q - source);
+    sum += std::cos(2.0 * kPi * (d * frequency + phase)) / (1.0 + d);
+  }
+  return std::clamp(0.5 + 0.5 * sum / std::sqrt(double(kWaveSources)), 0.0, 1.0);
+}
+
+// Fractal sums of |noise|, clamped to [0, 1].
+double fractal_abs_noise(const Vec3& q, int octaves) {
+  return std::clamp(turbulence_scalar(q, octaves, 0.5, 2.0), 0.0, 1.0);
+}
+
+double agate(const Vec3& q) {
+  const double warp = 0.75 * turbulence_scalar(q, 7, 0.5, 2.0);
+  return std::pow(0.5 * (1.0 + std::sin(2.0 * kPi * (q.z + warp))), 0.77);
+}
+
+double gradient(const Vec3& q, const Vec3& axis) {
+  const double length = glm::length(axis);
+  return length > 0.0 ? glm::dot(q, axis) / length : 0.0;
+}
+
+}  // namespace
+
+double triangle_wave(double v) {
+  const double f = fract(v);
+  return f < 0.5 ? 2.0 * f : 2.0 - 2.0 * f;
+}
+
+int checker_block(const Vec3& q) {
+  const double sum = std::floor(q.x + kCheckerTolerance) + std::floor(q.y + kCheckerTolerance) +
+                     std::floor(q.z + kCheckerTolerance);
+  return std::fmod(std::abs(sum), 2.0) == 1.0 ? 1 : 0;
+}
+
+double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
+  switch (space.pattern) {
+    case Pattern::solid:
+      return 0.0;
+    case Pattern::checker:
+      return checker_block(q);
+    case Pattern::gradient:
+      return fract(gradient(q, space.gradient_axis));
+    case Pattern::marble:
+      return q.x;
+    case Pattern::wood:
+      return std::sqrt(q.x * q.x + q.y * q.y);
+    case Pattern::granite:
+      return fractal_abs_noise(4.0 * q, 6);
+    case Pattern::agate:
+      return agate(q);
+    case Pattern::bozo:
+    case Pattern::spotted:
+    case Pattern::bumps:
+      return noise(q);
+    case Pattern::dents:
+      return std::pow(noise(q), 3.0);
+    case Pattern::radial:
+      return fract(std::atan2(-q.z, q.x) / (2.0 * kPi));
+    case Pattern::onion:
+      return fract(glm::length(q));
+    case Pattern::leopard: {
+      const double s = (std::sin(q.x) + std::sin(q.y) + std::sin(q.z)) / 3.0;
+      return s * s;
+    }
+    case Pattern::ripples:
+      return ripples(q, space.frequency, space.phase);
+    case Pattern::waves:
+      return waves(q, space.frequency, space.phase);
+    case Pattern::wrinkles:
+      return fractal_abs_noise(q, 10);
+  }
+  return 0.0;
+}
+
+double pattern_value(const scene::PatternSpace& space, const Vec3& world_point) {
+  return pattern_value_in_space(space, space.transform.inverse_point(world_point));
+}
+
+double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& pattern_point) {
+  Vec3 q = pattern_point;
+  if (space.turbulence.active()) {
+    const scene::Turbulence& turbulence = space.turbulence;
+    q += turbulence.amount *
+         turbulence_vector(q, turbulence.octaves, turbulence.omega, turbulence.lambda);
+  }
+  const double raw = raw_pattern_value(space, q);
+  if (space.pattern == Pattern::checker || shapes_its_own_wave(space.pattern)) return raw;
+  const double v = raw * space.frequency + space.phase;
+  if (space.pattern == Pattern::marble || space.pattern == Pattern::wood) return triangle_wave(v);
+  return wrap_to_unit(v);
+}
+
+}  // namespace convray::render

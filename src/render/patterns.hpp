@@ -1,0 +1,41 @@
+#pragma once
+// POV-Ray's patterns: a number in [0, 1] (or a block index for checker) at every point of
+// space, which a colour map turns into a pigment and a normal into bumps.
+//
+// Checked against POV-Ray 3.7 renders (orthographic camera on a plane, 16-bit linear output):
+//   gradient  fract(p . axis / |axis|)                 (negative side too: no mirroring)
+//   radial    fract(atan2(-z, x) / 2 pi): 0 along +x, 0.25 along -z, 0.5 along -x
+//   onion     fract(|p|)
+//   marble    triangle wave of x                         (0 at x = 0, 1 at x = 0.5)
+//   wood      triangle wave of sqrt(x^2 + y^2)
+//   leopard   ((sin x + sin y + sin z) / 3)^2
+//   checker   floor(x) + floor(y) + floor(z) odd -> the second colour; POV-Ray adds a
+//             tolerance between 1e-10 and 1e-9 before flooring (a plane at y = 0 gets the
+//             colour of y = +0)
+//   dents     noise^3, bumps/spotted/bozo: noise
+// frequency and phase: v -> wave(v * frequency + phase) with wave = fract (triangle wave for
+// marble and wood): gradient x frequency 2 phase 0.3 gives 0.4 at x = 0.05.
+// Noise-based patterns (bozo, spotted, granite, agate, bumps, dents, wrinkles, ripples,
+// waves) use our own noise and formulas: alike in character, not pixel for pixel.
+#include "scene/texture.hpp"
+#include "util/math.hpp"
+
+namespace convray::render {
+
+// The pattern's value at a world point (its space's transform inverted, turbulence applied,
+// frequency and phase applied): in [0, 1]. For checker, 0 or 1 (the block index).
+double pattern_value(const scene::PatternSpace& space, const Vec3& world_point);
+
+// The same at a point already in pattern space.
+double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& pattern_point);
+
+// The raw function of the pattern at a pattern-space point: no turbulence, frequency or phase.
+double raw_pattern_value(const scene::PatternSpace& space, const Vec3& pattern_point);
+
+// The triangle wave of period 1: 0 at integers, 1 at half-integers, linear between.
+double triangle_wave(double v);
+
+// POV-Ray's checker block index (0 or 1) at a pattern-space point.
+int checker_block(const Vec3& pattern_point);
+
+}  // namespace convray::render

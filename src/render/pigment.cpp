@@ -1,0 +1,97 @@
+#include "render/pigment.hpp"
+
+#include <algorithm>
+
+#include "render/patterns.hpp"
+
+namespace convray::render {
+
+using scene::Color;
+using scene::ColorMapEntry;
+using scene::Pattern;
+
+namespace {
+
+Color rgb(double r, double g, double b) { return Color{Vec3(r, g, b), 0.0, 0.0}; }
+
+const std::vector<ColorMapEntry> kGreyRamp = {{0.0, rgb(0, 0, 0)}, {1.0, rgb(1, 1, 1)}};
+
+const std::vector<ColorMapEntry> kMarbleMap = {{0.0, rgb(0.9, 0.8, 0.8)},
+                                               {0.9, rgb(0.9, 0.08, 0.08)},
+                                               {0.9, rgb(0, 0, 0)},
+                                               {1.0, rgb(0, 0, 0)}};
+
+const std::vector<ColorMapEntry> kWoodMap = {{0.0, rgb(0.666, 0.312, 0.2)},
+                                             {0.6, rgb(0.666, 0.312, 0.2)},
+                                             {0.6, rgb(0.4, 0.133, 0.066)},
+                                             {1.0, rgb(0.4, 0.133, 0.066)}};
+
+const std::vector<ColorMapEntry> kAgateMap = {
+    {0.0, rgb(1, 1, 1)},       {0.5, rgb(0.95, 0.75, 0.5)}, {0.5, rgb(0.9, 0.7, 0.5)},
+    {0.6, rgb(0.9, 0.7, 0.4)}, {0.6, rgb(1.0, 0.7, 0.4)},   {1.0, rgb(0.6, 0.3, 0.0)}};
+
+const std::vector<ColorMapEntry> kBozoMap = {
+    {0.0, rgb(1, 1, 1)}, {0.4, rgb(1, 1, 1)}, {0.4, rgb(0, 1, 0)}, {0.6, rgb(0, 1, 0)},
+    {0.6, rgb(0, 0, 1)}, {0.8, rgb(0, 0, 1)}, {0.8, rgb(1, 0, 0)}, {1.0, rgb(1, 0, 0)}};
+
+const std::vector<ColorMapEntry> kRadialMap = {
+    {0.0, rgb(0, 1, 1)}, {1.0 / 3.0, rgb(1, 1, 0)}, {2.0 / 3.0, rgb(1, 0, 1)}, {1.0, rgb(0, 1, 1)}};
+
+const Color kCheckerDefaults[2] = {rgb(0, 0, 1), rgb(0, 1, 0)};
+
+Color checker_color(const scene::Pigment& pigment, const Vec3& world_point) {
+  const int block = int(pattern_value(pigment.space, world_point));
+  if (size_t(block) < pigment.block_colors.size()) return pigment.block_colors[size_t(block)];
+  return kCheckerDefaults[block];
+}
+
+}  // namespace
+
+Color lookup_color_map(const std::vector<ColorMapEntry>& map, double value) {
+  if (map.empty()) return Color{};
+  if (value <= map.front().value) return map.front().color;
+  if (value >= map.back().value) return map.back().color;
+  // The first entry above the value; its predecessor is at or below it.
+  const auto above =
+      std::upper_bound(map.begin(), map.end(), value,
+                       [](double v, const ColorMapEntry& entry) { return v < entry.value; });
+  const ColorMapEntry& low = *(above - 1);
+  const ColorMapEntry& high = *above;
+  const double span = high.value - low.value;
+  if (!(span > 0.0)) return high.color;
+  return scene::mix(low.color, high.color, (value - low.value) / span);
+}
+
+const std::vector<ColorMapEntry>& default_color_map(Pattern pattern) {
+  switch (pattern) {
+    case Pattern::marble:
+      return kMarbleMap;
+    case Pattern::wood:
+      return kWoodMap;
+    case Pattern::agate:
+      return kAgateMap;
+    case Pattern::bozo:
+      return kBozoMap;
+    case Pattern::radial:
+      return kRadialMap;
+    default:
+      return kGreyRamp;
+  }
+}
+
+Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& world_point) {
+  switch (pigment.space.pattern) {
+    case Pattern::solid:
+      return pigment.color;
+    case Pattern::checker:
+      return checker_color(pigment, world_point);
+    default:
+      break;
+  }
+  const double value = pattern_value(pigment.space, world_point);
+  const std::vector<ColorMapEntry>& map =
+      pigment.color_map.empty() ? default_color_map(pigment.space.pattern) : pigment.color_map;
+  return lookup_color_map(map, value);
+}
+
+}  // namespace convray::render

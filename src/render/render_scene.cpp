@@ -1,0 +1,154 @@
+#include "render/render_scene.hpp"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "render/antialias.hpp"
+#include "render/integrator.hpp"
+#include "render/progress.hpp"
+#include "render/scene_camera.hpp"
+
+namespace convray::render {
+
+namespace {
+
+// A rectangle of pixels [x0, x1) x [y0, y1).
+struct Tile {
+  int x0, y0, x1, y1;
+  uint64_t pixels() const { return uint64_t(x1 - x0) * uint64_t(y1 - y0); }
+};
+
+// Runs `work(tile, stats)` on every tile of a width x height film over TBB's threads, with
+// per-thread statistics summed into `total` at the end (integer sums: order-independent).
+template <typename Work>
+void for_each_tile(int width, int height, int tile_size, RenderStats& total, Work&& work) {
+  const int tiles_x = (width + tile_size - 1) / tile_size;
+  const int tiles_y = (height + tile_size - 1) / tile_size;
+  tbb::enumerable_thread_specific<RenderStats> per_thread;
+  const tbb::blocked_range2d<int> all_tiles(0, tiles_y, 1, 0, tiles_x, 1);
+  tbb::parallel_for(all_tiles, [&](const tbb::blocked_range2d<int>& range) {
+    RenderStats& stats = per_thread.local();
+    for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
+      for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
+        const Tile tile{tx * tile_size, ty * tile_size, std::min((tx + 1) * tile_size, width),
+                        std::min((ty + 1) * tile_size, height)};
+        work(tile, stats);
+      }
+    }
+  });
+  for (const RenderStats& stats : per_thread) total += stats;
+}
+
+void check_settings(const RenderSettings& s) {
+  if (s.width < 1 || s.height < 1) {
+    throw std::invalid_argument("render_scene: the image needs at least one pixel");
+  }
+  if (s.tile_size < 1) throw std::invalid_argument("render_scene: tile_size must be positive");
+  if (s.antialias && (s.aa_depth < 1 || s.aa_depth > 9)) {
+    throw std::invalid_argument("render_scene: the anti-aliasing depth must be 1 to 9");
+  }
+  if (!(s.ray_offset >= 0.0)) {
+    throw std::invalid_argument("render_scene: ray_offset must not be negative");
+  }
+}
+
+// The mean colour of pixel (i, j)'s supersamples and its first-pass `centre` sample.
+Vec3 supersampled_pixel(const Integrator& integrator, const SceneCamera& camera, int i, int j,
+                        const Vec3& centre, const AntialiasSettings& aa, RenderStats& stats) {
+  const std::vector<Vec2> positions = supersample_positions(i, j, aa);
+  Vec3 sum = centre;
+  for (const Vec2& at : positions) {
+    sum += integrator.trace_camera_ray(camera.ray_at_film(at.x, at.y), stats);
+  }
+  ++stats.supersampled_pixels;
+  return sum / double(positions.size() + 1);
+}
+
+// The first pass: every pixel's centre.
+void render_centres(const Integrator& integrator, const SceneCamera& camera,
+                    const RenderSettings& settings, Progress* progress, RenderResult& result) {
+  Film& film = result.film;
+  for_each_tile(settings.width, settings.height, settings.tile_size, result.stats,
+                [&](const Tile& tile, RenderStats& stats) {
+                  for (int j = tile.y0; j < tile.y1; ++j) {
+                    for (int i = tile.x0; i < tile.x1; ++i) {
+                      film.set(i, j, integrator.trace_camera_ray(camera.primary_ray(i, j), stats));
+                    }
+                  }
+                  if (progress) progress->advance(tile.pixels());
+                });
+}
+
+// The second pass: pixels that differ from a neighbour get supersampled. The decisions read
+// the first pass only, so they do not depend on the order in which tiles finish.
+void antialias(const Integrator& integrator, const SceneCamera& camera,
+               const RenderSettings& settings, RenderResult& result) {
+  const AntialiasSettings aa{settings.aa_threshold, settings.aa_gamma,      settings.aa_depth,
+                             settings.jitter,       settings.jitter_amount, settings.seed};
+  const Film& first = result.film;
+  const std::vector<uint8_t> flags = pixels_to_supersample(first, aa.threshold, aa.gamma);
+  Film refined = first;
+  for_each_tile(settings.width, settings.height, settings.tile_size, result.stats,
+                [&](const Tile& tile, RenderStats& stats) {
+                  for (int j = tile.y0; j < tile.y1; ++j) {
+                    for (int i = tile.x0; i < tile.x1; ++i) {
+                      if (!flags[size_t(j) * size_t(settings.width) + size_t(i)]) continue;
+                      const Vec3 mean =
+                          supersampled_pixel(integrator, camera, i, j, first.at(i, j), aa, stats);
+                      refined.set(i, j, mean);
+                    }
+                  }
+                });
+  result.film = std::move(refined);
+}
+
+// POV-Ray computes in the space of `assumed_gamma` and decodes at the end: a working value v
+// is the linear value v^gamma (POV-Ray 3.7 with assumed_gamma 2.2 writes background
+// <0.5,0.2,0.9> as the sRGB bytes of <0.5^2.2, ...>: 128, 48, 230; a diffuse value 0.5313
+// comes out as 0.2487 = 0.5313^2.2). Scenes with assumed_gamma 1 are untouched.
+void decode_assumed_gamma(double gamma, Film& film) {
+  if (gamma == 1.0 || !(gamma > 0.0)) return;
+  for (int j = 0; j < film.height(); ++j) {
+    for (int i = 0; i < film.width(); ++i) {
+      film.set(i, j, glm::pow(glm::max(film.at(i, j), Vec3(0.0)), Vec3(gamma)));
+    }
+  }
+}
+
+}  // namespace
+
+double automatic_ray_offset(const scene::Scene& scene, const geometry::World& world) {
+  const Box3 bounds = world.bounds();
+  double size = glm::length(scene.camera.location);
+  if (!bounds.empty()) {
+    const double diagonal = glm::length(bounds.extent());
+    if (std::isfinite(diagonal)) size = std::max(size, diagonal);
+  }
+  return 1e-7 * (size > 0.0 ? size : 1.0);
+}
+
+RenderResult render_scene(const scene::Scene& scene, const geometry::World& world,
+                          const RenderSettings& settings, Progress* progress) {
+  check_settings(settings);
+  const SceneCamera camera(scene.camera, settings.width, settings.height);
+  IntegratorSettings integrator_settings;
+  integrator_settings.ray_offset =
+      settings.ray_offset > 0.0 ? settings.ray_offset : automatic_ray_offset(scene, world);
+  integrator_settings.seed = settings.seed;
+  const Integrator integrator(scene, world, integrator_settings);
+
+  RenderResult result{Film(settings.width, settings.height), {}};
+  render_centres(integrator, camera, settings, progress, result);
+  if (settings.antialias) antialias(integrator, camera, settings, result);
+  decode_assumed_gamma(scene.settings.assumed_gamma, result.film);
+  if (progress) progress->finish();
+  return result;
+}
+
+}  // namespace convray::render

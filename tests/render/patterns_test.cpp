@@ -1,0 +1,213 @@
+// Pattern values at chosen points: the exact patterns (checker, gradient, radial, onion,
+// marble, wood, leopard) against POV-Ray 3.7's values (read from its 16-bit renders, see
+// patterns.hpp; they agree with the formulas to a few 1e-5) and formulas; colour maps; and our
+// noise's promises.
+#include "render/patterns.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/noise.hpp"
+#include "render/pigment.hpp"
+
+namespace convray::render {
+namespace {
+
+using scene::Pattern;
+
+scene::PatternSpace space_of(Pattern pattern) {
+  scene::PatternSpace space;
+  space.pattern = pattern;
+  return space;
+}
+
+TEST(Patterns, CheckerAlternatesUnitCubes) {
+  const scene::PatternSpace checker = space_of(Pattern::checker);
+  EXPECT_EQ(pattern_value(checker, Vec3(0.5, 0.5, 0.5)), 0.0);
+  EXPECT_EQ(pattern_value(checker, Vec3(1.5, 0.5, 0.5)), 1.0);
+  EXPECT_EQ(pattern_value(checker, Vec3(1.5, 1.5, 0.5)), 0.0);
+  EXPECT_EQ(pattern_value(checker, Vec3(-0.5, 0.5, 0.5)), 1.0);
+  // POV-Ray 3.7 at (-1.95, 0, 1.45): floor sum -2 + 0 + 1 = -1, odd: the second colour.
+  EXPECT_EQ(pattern_value(checker, Vec3(-1.95, 0.0, 1.45)), 1.0);
+}
+
+TEST(Patterns, CheckerOnAPlaneAtZeroIgnoresRoundingBelowIt) {
+  // A hit point of the plane y = 0 may come out at y = -1e-17: it keeps the colour of y = 0,
+  // as in POV-Ray (which flips only from about y = -1e-9 on).
+  const scene::PatternSpace checker = space_of(Pattern::checker);
+  EXPECT_EQ(pattern_value(checker, Vec3(0.5, -1e-17, 0.5)),
+            pattern_value(checker, Vec3(0.5, 0.0, 0.5)));
+  EXPECT_NE(pattern_value(checker, Vec3(0.5, -1e-6, 0.5)),
+            pattern_value(checker, Vec3(0.5, 0.0, 0.5)));
+}
+
+TEST(Patterns, GradientIsTheFractionalPartAlongTheNormalisedAxis) {
+  scene::PatternSpace gradient = space_of(Pattern::gradient);
+  EXPECT_NEAR(pattern_value(gradient, Vec3(-1.95, 1.45, 0)), 0.05, 1e-12);
+  EXPECT_NEAR(pattern_value(gradient, Vec3(1.95, -1.45, 0)), 0.95, 1e-12);
+  gradient.gradient_axis = Vec3(-1, 0, 0);
+  EXPECT_NEAR(pattern_value(gradient, Vec3(-1.95, 0, 0)), 0.95, 1e-12);
+  // POV-Ray: gradient <1,1,0> at (-1.95, 1.45): fract(-0.5 / sqrt 2) = 0.64645.
+  gradient.gradient_axis = Vec3(1, 1, 0);
+  EXPECT_NEAR(pattern_value(gradient, Vec3(-1.95, 1.45, 0)), 0.646447, 1e-6);
+}
+
+TEST(Patterns, FrequencyAndPhaseWrapTheValue) {
+  scene::PatternSpace gradient = space_of(Pattern::gradient);
+  gradient.frequency = 2.0;
+  gradient.phase = 0.3;
+  // POV-Ray 3.7: 0.4 at x = 0.05 and 0.2 at x = 1.95.
+  EXPECT_NEAR(pattern_value(gradient, Vec3(0.05, 0, 0)), 0.4, 1e-12);
+  EXPECT_NEAR(pattern_value(gradient, Vec3(1.95, 0, 0)), 0.2, 1e-12);
+}
+
+TEST(Patterns, PatternsAreEvaluatedInTheirOwnSpace) {
+  scene::PatternSpace gradient = space_of(Pattern::gradient);
+  gradient.transform = scene::Transform::scaling(Vec3(0.7));
+  // POV-Ray 3.7: gradient x scale 0.7 at x = -1.95 gives 0.21431.
+  EXPECT_NEAR(pattern_value(gradient, Vec3(-1.95, 1.45, 0)), 0.214286, 1e-6);
+}
+
+TEST(Patterns, RadialTurnsFromPlusXTowardsMinusZ) {
+  const scene::PatternSpace radial = space_of(Pattern::radial);
+  EXPECT_NEAR(pattern_value(radial, Vec3(1, 0, 0)), 0.0, 1e-12);
+  EXPECT_NEAR(pattern_value(radial, Vec3(0, 0, -1)), 0.25, 1e-12);
+  EXPECT_NEAR(pattern_value(radial, Vec3(-1, 0, 1e-300)), 0.5, 1e-12);
+  EXPECT_NEAR(pattern_value(radial, Vec3(0, 5, 1)), 0.75, 1e-12);
+  // POV-Ray 3.7 values: (1.55, 1.15) -> 0.89841, (-1.95, 1.45) -> 0.60175.
+  EXPECT_NEAR(pattern_value(radial, Vec3(1.55, 0, 1.15)), 0.89841, 5e-5);
+  EXPECT_NEAR(pattern_value(radial, Vec3(-1.95, 0, 1.45)), 0.60175, 5e-5);
+}
+
+TEST(Patterns, OnionIsTheFractionalDistanceFromTheOrigin) {
+  const scene::PatternSpace onion = space_of(Pattern::onion);
+  EXPECT_NEAR(pattern_value(onion, Vec3(0, 3, 4) * 0.5), 0.5, 1e-12);
+  EXPECT_NEAR(pattern_value(onion, Vec3(-1.95, 1.45, 0)), 0.43001, 5e-5);  // POV-Ray 3.7
+}
+
+TEST(Patterns, MarbleAndWoodAreTriangleWaves) {
+  const scene::PatternSpace marble = space_of(Pattern::marble);
+  EXPECT_NEAR(pattern_value(marble, Vec3(0.05, 0, 0)), 0.1, 1e-12);
+  EXPECT_NEAR(pattern_value(marble, Vec3(-1.45, 0, 0)), 0.9, 1e-12);
+  EXPECT_NEAR(pattern_value(marble, Vec3(1.55, 7, 3)), 0.9, 1e-12);
+  const scene::PatternSpace wood = space_of(Pattern::wood);
+  EXPECT_NEAR(pattern_value(wood, Vec3(-1.95, 1.45, 0)), 0.86000, 5e-5);  // POV-Ray 3.7
+  EXPECT_NEAR(pattern_value(wood, Vec3(0.05, -0.05, 9)), 0.14142, 5e-5);
+}
+
+TEST(Patterns, LeopardIsTheSquaredMeanOfSines) {
+  const Vec3 p(-0.95, -0.55, 0.0);
+  const double s = (std::sin(p.x) + std::sin(p.y)) / 3.0;
+  EXPECT_NEAR(pattern_value(space_of(Pattern::leopard), p), s * s, 1e-12);
+  EXPECT_NEAR(s * s, 0.198, 5e-4);  // POV-Ray 3.7's value there
+}
+
+TEST(Patterns, DentsAreCubedBumps) {
+  const Vec3 p(0.3, 1.7, -2.2);
+  const double bumps = pattern_value(space_of(Pattern::bumps), p);
+  EXPECT_NEAR(pattern_value(space_of(Pattern::dents), p), bumps * bumps * bumps, 1e-12);
+}
+
+TEST(Patterns, NoiseBasedPatternsStayInTheUnitInterval) {
+  for (Pattern pattern : {Pattern::bozo, Pattern::granite, Pattern::agate, Pattern::leopard,
+                          Pattern::ripples, Pattern::waves, Pattern::wrinkles, Pattern::spotted}) {
+    for (int k = 0; k < 200; ++k) {
+      const Vec3 p(0.37 * k - 20.0, std::sin(k) * 9.0, 0.11 * k * k - 7.0);
+      const double v = pattern_value(space_of(pattern), p);
+      EXPECT_GE(v, 0.0);
+      EXPECT_LE(v, 1.0);
+    }
+  }
+}
+
+TEST(Noise, ZeroAtLatticePointsBoundedAndVaried) {
+  EXPECT_EQ(signed_noise(Vec3(3, -2, 7)), 0.0);
+  EXPECT_EQ(noise(Vec3(0)), 0.5);
+  double lo = 1, hi = -1;
+  for (int k = 0; k < 2000; ++k) {
+    const double v = signed_noise(Vec3(0.173 * k, 0.619 * k + 0.5, -0.311 * k + 0.25));
+    EXPECT_LE(std::abs(v), 1.0);
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  EXPECT_LT(lo, -0.3);
+  EXPECT_GT(hi, 0.3);
+}
+
+TEST(Noise, ContinuousAcrossCellFaces) {
+  for (double y : {0.1, 0.4, 0.77}) {
+    EXPECT_NEAR(signed_noise(Vec3(2.0 - 1e-9, y, 0.3)), signed_noise(Vec3(2.0 + 1e-9, y, 0.3)),
+                1e-7);
+  }
+}
+
+TEST(Noise, TurbulenceSumsOctaves) {
+  const Vec3 p(0.3, 0.6, 0.9);
+  EXPECT_NEAR(turbulence_scalar(p, 1, 0.5, 2.0), std::abs(signed_noise(p)), 1e-15);
+  EXPECT_NEAR(turbulence_scalar(p, 2, 0.5, 2.0),
+              std::abs(signed_noise(p)) + 0.5 * std::abs(signed_noise(2.0 * p)), 1e-15);
+  const Vec3 t = turbulence_vector(p, 2, 0.5, 2.0);
+  const Vec3 expected = vector_noise(p) + 0.5 * vector_noise(2.0 * p);
+  EXPECT_NEAR(glm::length(t - expected), 0.0, 1e-15);
+}
+
+scene::Color grey(double v) { return scene::Color{Vec3(v), 0.0, 0.0}; }
+
+TEST(ColorMap, InterpolatesBetweenEntriesAndClampsOutside) {
+  const std::vector<scene::ColorMapEntry> map = {
+      {0.2, grey(0.0)}, {0.6, scene::Color{Vec3(1.0, 0.5, 0.0), 0.4, 0.2}}, {0.8, grey(1.0)}};
+  EXPECT_EQ(lookup_color_map(map, 0.0).rgb, Vec3(0.0));   // before the first: the first
+  EXPECT_EQ(lookup_color_map(map, 0.95).rgb, Vec3(1.0));  // after the last: the last
+  const scene::Color mid = lookup_color_map(map, 0.5);    // 3/4 of the way from 0.2 to 0.6
+  EXPECT_NEAR(mid.rgb.r, 0.75, 1e-12);
+  EXPECT_NEAR(mid.rgb.g, 0.375, 1e-12);
+  EXPECT_NEAR(mid.filter, 0.3, 1e-12);
+  EXPECT_NEAR(mid.transmit, 0.15, 1e-12);
+  EXPECT_NEAR(lookup_color_map(map, 0.7).rgb.b, 0.5, 1e-12);
+}
+
+TEST(ColorMap, EqualValuesMakeASharpEdge) {
+  const std::vector<scene::ColorMapEntry> map = {
+      {0.0, grey(0.1)}, {0.5, grey(0.2)}, {0.5, grey(0.9)}, {1.0, grey(1.0)}};
+  EXPECT_NEAR(lookup_color_map(map, 0.4999).rgb.r, 0.2, 1e-3);
+  EXPECT_NEAR(lookup_color_map(map, 0.5001).rgb.r, 0.9, 1e-3);
+}
+
+TEST(ColorMap, DefaultMapsAsPovRayHasThem) {
+  // Measured on POV-Ray 3.7: marble at 0.3 is <0.9, 0.56, 0.56>; bozo between 0.4 and 0.6 is
+  // green; the grey ramp elsewhere.
+  const scene::Color marble = lookup_color_map(default_color_map(Pattern::marble), 0.3);
+  EXPECT_NEAR(marble.rgb.r, 0.9, 1e-12);
+  EXPECT_NEAR(marble.rgb.g, 0.56, 1e-12);
+  EXPECT_EQ(lookup_color_map(default_color_map(Pattern::bozo), 0.5).rgb, Vec3(0, 1, 0));
+  EXPECT_NEAR(lookup_color_map(default_color_map(Pattern::gradient), 0.3).rgb.g, 0.3, 1e-12);
+}
+
+TEST(Pigment, CheckerUsesItsBlockColoursOrPovRaysDefaults) {
+  scene::Pigment pigment;
+  pigment.space.pattern = Pattern::checker;
+  EXPECT_EQ(evaluate_pigment(pigment, Vec3(0.5)).rgb, Vec3(0, 0, 1));  // default: blue, green
+  EXPECT_EQ(evaluate_pigment(pigment, Vec3(1.5, 0.5, 0.5)).rgb, Vec3(0, 1, 0));
+  pigment.block_colors = {grey(1.0)};
+  EXPECT_EQ(evaluate_pigment(pigment, Vec3(0.5)).rgb, Vec3(1.0));
+  EXPECT_EQ(evaluate_pigment(pigment, Vec3(1.5, 0.5, 0.5)).rgb, Vec3(0, 1, 0));
+  pigment.block_colors = {grey(1.0), grey(0.25)};
+  EXPECT_EQ(evaluate_pigment(pigment, Vec3(1.5, 0.5, 0.5)).rgb, Vec3(0.25));
+}
+
+TEST(Pigment, PatternThroughTheSceneMap) {
+  scene::Pigment pigment;
+  pigment.space.pattern = Pattern::gradient;
+  pigment.color_map = {{0.0, grey(0.0)}, {1.0, grey(0.5)}};
+  EXPECT_NEAR(evaluate_pigment(pigment, Vec3(0.5, 3, 3)).rgb.r, 0.25, 1e-12);
+  pigment.space.pattern = Pattern::solid;
+  pigment.color = scene::Color{Vec3(0.1, 0.2, 0.3), 0.5, 0.25};
+  const scene::Color solid = evaluate_pigment(pigment, Vec3(9));
+  EXPECT_EQ(solid.rgb, Vec3(0.1, 0.2, 0.3));
+  EXPECT_EQ(solid.filter, 0.5);
+  EXPECT_EQ(solid.transmit, 0.25);
+}
+
+}  // namespace
+}  // namespace convray::render
