@@ -4,17 +4,9 @@
 //   vertex_blob MESH --radius R [--offset D] [--fit-box 400] [--size WxH]
 //               --camera X,Y,Z --look-at X,Y,Z --angle DEG --light X,Y,Z -o SCENE.pov
 //
-// Geometry. The mesh is transformed as `convray quick --fit-box` does: a uniform scale so the
-// largest extent of its bounding box is the box size, and the box centred at the origin. Each
-// distinct vertex position used by a triangle becomes `sphere { <x,y,z>, R, 1 }`, written
+// Geometry and threshold: bench/vertex_blob_scene.hpp (shared with bench/vertex_blob_render).
+// Each distinct vertex position used by a triangle becomes `sphere { <x,y,z>, R, 1 }`, written
 // with 17 significant digits, so POV-Ray reads back exactly the doubles we computed.
-//
-// Threshold. A flat sheet of sphere components, rho per unit area, has the field
-// rho (pi/3) R^2 (1 - h^2/R^2)^3 at height h (the plane formula of DESIGN.md section 4, since
-// the sphere component is the same quartic kernel). With rho = vertices / surface area, the
-// threshold rho (pi/3) R^2 (1 - D^2/R^2)^3 puts the blob's surface near offset D from the
-// mesh, as `--offset D` does for the convolution surface. With D = R/2 that is
-// rho (pi/3) R^2 (0.75)^3.
 //
 // Standard output: `key: value` lines (triangles, vertices, area, rho, threshold, ...) that
 // bench/table1.sh reads. Exit status 2 on a usage error, 1 on an input error.
@@ -33,6 +25,7 @@
 
 #include "mesh/load.hpp"
 #include "util/math.hpp"
+#include "vertex_blob_scene.hpp"
 
 namespace {
 
@@ -126,28 +119,6 @@ Options parse_options(int argc, char** argv) {
   return o;
 }
 
-// Distinct positions of the vertices that triangles use, in the order of first use.
-std::vector<Vec3> used_positions(const convray::mesh::TriangleSoup& soup) {
-  std::vector<Vec3> positions;
-  positions.reserve(soup.vertices.size());
-  std::vector<char> seen(soup.vertices.size(), 0);
-  for (const auto& tri : soup.triangles) {
-    for (uint32_t index : tri) {
-      if (!seen[index]) positions.push_back(soup.vertices[index]);
-      seen[index] = 1;
-    }
-  }
-  // Two indices may share a position (the soup promises no welding): one component each.
-  auto less = [](const Vec3& a, const Vec3& b) {
-    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-  };
-  std::vector<Vec3> sorted = positions;
-  std::sort(sorted.begin(), sorted.end(), less);
-  if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) return positions;
-  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-  return sorted;
-}
-
 std::string vec(const Vec3& v) {
   char text[96];
   std::snprintf(text, sizeof text, "<%.17g, %.17g, %.17g>", v.x, v.y, v.z);
@@ -194,27 +165,15 @@ int main(int argc, char** argv) {
     const convray::mesh::LoadedMesh loaded = convray::mesh::load_mesh(o.mesh);
     const convray::mesh::TriangleSoup& soup = loaded.soup;
 
-    // The fit-box transform of `convray quick --fit-box`.
-    const convray::Box3 box = soup.bounds();
-    const Vec3 extent = box.extent();
-    const double largest = std::max({extent.x, extent.y, extent.z});
-    if (!(largest > 0.0)) throw std::runtime_error(o.mesh + ": the mesh has no extent");
-    const double scale = o.fit_box / largest;
-    const Vec3 centre = 0.5 * (box.lo + box.hi);
-    auto fit = [&](const Vec3& p) { return (p - centre) * scale; };
-
-    std::vector<Vec3> centres = used_positions(soup);
-    for (Vec3& c : centres) c = fit(c);
-    double area = 0.0;
-    for (size_t t = 0; t < soup.size(); ++t) {
-      const auto [a, b, c] = soup.corners(t);
-      area += 0.5 * glm::length(glm::cross(fit(b) - fit(a), fit(c) - fit(a)));
+    convray::bench::VertexBlob blob;
+    try {
+      blob = convray::bench::make_vertex_blob(soup, o.fit_box, o.radius, o.offset);
+    } catch (const std::runtime_error& error) {
+      throw std::runtime_error(o.mesh + ": " + error.what());
     }
-
-    // Flat-sheet threshold at height D (see the top of this file).
-    const double rho = double(centres.size()) / area;
-    const double q = 1.0 - (o.offset * o.offset) / (o.radius * o.radius);
-    const double threshold = rho * (convray::kPi / 3.0) * o.radius * o.radius * q * q * q;
+    const std::vector<Vec3>& centres = blob.centres;
+    const double scale = blob.scale, area = blob.area, rho = blob.rho;
+    const double threshold = blob.threshold;
 
     char summary[1024];
     std::snprintf(summary, sizeof summary,

@@ -10,6 +10,10 @@
 namespace convray::implicit {
 namespace {
 
+// Chunked first-root searches pay off from about this many supports per line (measured on
+// the vertex blob of bench/vertex_blob_render: a loss at 2.5, a gain from 10).
+constexpr double kChunkedSupportsPerLine = 5.0;
+
 void check_weight(const Weight& w, const char* what) {
   if (!(w.radius > 0.0) || !std::isfinite(w.radius) || !std::isfinite(w.strength)) {
     throw std::invalid_argument(std::string(what) +
@@ -75,6 +79,11 @@ ConvolutionSurface::Impl::Impl(const ConvolutionObject& object) : threshold(obje
   capsule_base = uint32_t(sphere_centers.size());
   arc_base = capsule_base + uint32_t(capsules.size());
   triangle_base = arc_base + uint32_t(arcs.size());
+  spheres_only = capsules.empty() && arcs.empty() && triangles.empty();
+  for (size_t i = 0; i < sphere_radii.size(); ++i) {
+    const double r2 = sphere_radii[i] * sphere_radii[i];
+    sphere_weights.push_back(sphere_strengths[i] / (r2 * r2));
+  }
 
   accel::SupportSources sources;
   sources.sphere_centers = sphere_centers;
@@ -90,6 +99,17 @@ ConvolutionSurface::Impl::Impl(const ConvolutionObject& object) : threshold(obje
          g.radius});
   }
   index = std::make_unique<accel::SupportIndex>(sources);
+  gather_in_chunks = spheres_only && expected_supports_per_line() > kChunkedSupportsPerLine;
+}
+
+// Cauchy's formula: a convex body's mean shadow is a quarter of its surface area, so a random
+// line through the bounds crosses about 4 (sum of pi r^2) / area(bounds) balls.
+double ConvolutionSurface::Impl::expected_supports_per_line() const {
+  const Vec3 e = index->bounds().extent();
+  const double area = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+  double shadows = 0.0;
+  for (double r : sphere_radii) shadows += kPi * r * r;
+  return area > 0.0 ? 4.0 * shadows / area : 0.0;
 }
 
 ConvolutionSurface::ConvolutionSurface(const ConvolutionObject& object)
@@ -106,10 +126,10 @@ size_t ConvolutionSurface::memory_bytes() const {
   const Impl& m = *impl_;
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return sizeof(Impl) + bytes(m.sphere_centers) + bytes(m.sphere_radii) +
-         bytes(m.sphere_strengths) + bytes(m.capsules) + bytes(m.capsule_radii) +
-         bytes(m.capsule_strengths) + bytes(m.capsule_is_blob) + bytes(m.arcs) +
-         bytes(m.arc_radii) + bytes(m.arc_strengths) + bytes(m.triangles) + bytes(m.groups) +
-         m.index->memory_bytes();
+         bytes(m.sphere_strengths) + bytes(m.sphere_weights) + bytes(m.capsules) +
+         bytes(m.capsule_radii) + bytes(m.capsule_strengths) + bytes(m.capsule_is_blob) +
+         bytes(m.arcs) + bytes(m.arc_radii) + bytes(m.arc_strengths) + bytes(m.triangles) +
+         bytes(m.groups) + m.index->memory_bytes();
 }
 
 field::FieldSample ConvolutionSurface::field(const Vec3& p) const {
@@ -130,9 +150,11 @@ std::optional<SurfaceHit> ConvolutionSurface::first_hit(const Ray& ray, double t
                                                         TraceStats& stats) const {
   thread_local std::vector<double> found;
   found.clear();
-  find_roots(*impl_, ray, tmin, tmax, RootMode::first, found, stats);
+  std::optional<Vec3> gradient;
+  find_roots(*impl_, ray, tmin, tmax, RootMode::first, found, stats, &gradient);
   if (found.empty()) return std::nullopt;
-  return make_surface_hit(*this, ray, found.front());
+  if (!gradient) return make_surface_hit(*this, ray, found.front());
+  return surface_hit_from_gradient(ray, found.front(), *gradient);
 }
 
 bool ConvolutionSurface::occluded(const Ray& ray, double tmin, double tmax,
@@ -144,10 +166,13 @@ bool ConvolutionSurface::occluded(const Ray& ray, double tmin, double tmax,
 }
 
 SurfaceHit make_surface_hit(const ConvolutionSurface& surface, const Ray& ray, double t) {
+  return surface_hit_from_gradient(ray, t, surface.field(ray.at(t)).gradient);
+}
+
+SurfaceHit surface_hit_from_gradient(const Ray& ray, double t, const Vec3& g) {
   SurfaceHit hit;
   hit.t = t;
   hit.point = ray.at(t);
-  const Vec3 g = surface.field(hit.point).gradient;
   const double length = glm::length(g);
   // Inside is F >= T, so the field falls outwards; a vanishing gradient (a touching point)
   // falls back to facing the ray.

@@ -1,8 +1,9 @@
 #pragma once
 // A convolution object made ready for queries: its field at any point (through the
 // acceleration structure's point query) and its surface F = T along rays, found by the
-// paper's per-interval degree-6 fits and Bézier clipping, every root polished on the exact
-// field. reference_tracer.hpp is the slow exact twin tests compare this with.
+// paper's per-interval degree-6 fits and Bézier clipping (or, where only spheres reach, the
+// exact quartic of sphere_sweep.hpp), every root polished on the exact field.
+// reference_tracer.hpp is the slow exact twin tests compare this with.
 #include <memory>
 #include <optional>
 #include <vector>
@@ -49,5 +50,7 @@ class ConvolutionSurface {
 
 // The surface hit at distance t: the point and the outward unit normal -grad F / |grad F|.
 SurfaceHit make_surface_hit(const ConvolutionSurface& surface, const Ray& ray, double t);
+// The same, given the field's gradient at ray.at(t).
+SurfaceHit surface_hit_from_gradient(const Ray& ray, double t, const Vec3& gradient);
 
 }  // namespace convray::implicit

@@ -20,6 +20,7 @@ struct ConvolutionSurface::Impl {
   // Spheres: skeleton points and POV-Ray blob spheres share the kernel s (1 - d^2/R^2)^2.
   std::vector<Vec3> sphere_centers;
   std::vector<double> sphere_radii, sphere_strengths;
+  std::vector<double> sphere_weights;  // strength / radius^4: the sphere sweep's k
   // Capsules: convolution segments (integrals) and blob cylinders (distance kernels).
   std::vector<field::Segment> capsules;
   std::vector<double> capsule_radii, capsule_strengths;
@@ -37,9 +38,17 @@ struct ConvolutionSurface::Impl {
   uint32_t capsule_base = 0, arc_base = 0, triangle_base = 0;
   double threshold = 1.0;
   double min_radius = 1.0;  // smallest support radius: the length scale of tolerances
+  // Nothing but spheres: every ray goes straight to the sphere sweep (sphere_sweep.hpp).
+  bool spheres_only = false;
+  // First-root searches gather the ray in chunks (surface_roots.cpp): set for spheres only
+  // (re-solving the supports that straddle a chunk's end costs little) and where a line
+  // through the bounds crosses enough supports that stopping early beats the extra traversals.
+  bool gather_in_chunks = false;
   std::unique_ptr<accel::SupportIndex> index;  // built last, over the arrays above
 
   explicit Impl(const ConvolutionObject& object);
+  // How many sphere supports a random line through the bounds crosses, on average.
+  double expected_supports_per_line() const;
 
   const Group& group_of(uint32_t triangle) const {
     auto it = std::upper_bound(groups.begin(), groups.end(), triangle,

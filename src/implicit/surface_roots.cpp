@@ -7,6 +7,7 @@
 #include "field/triangle_batch.hpp"
 #include "implicit/bezier_clip.hpp"
 #include "implicit/interval_fit.hpp"
+#include "implicit/sphere_sweep.hpp"
 #include "implicit/surface_impl.hpp"
 
 namespace convray::implicit {
@@ -18,6 +19,9 @@ constexpr double kErrorSafety = 3.0;
 // Fits whose error estimate exceeds this fraction of T are split in two, at most kMaxSplits deep.
 constexpr double kFitTolerance = 1e-3;
 constexpr int kMaxSplits = 4;
+// A first-root search gathers this fraction of the ray's way through the bounds first, and
+// twice as much each time it finds nothing (see find_roots).
+constexpr double kFirstChunk = 0.125;
 
 struct FitPiece {
   double t0, t1;
@@ -303,17 +307,22 @@ void RayTracer::solve_cluster(std::span<const accel::SupportInterval> cluster, d
   }
 }
 
-}  // namespace
-
-void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
-                RootMode mode, std::vector<double>& out, TraceStats& stats) {
+// Every root (or the first) in [tmin, tmax] from the supports crossing that range.
+bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepRequest& request,
+                 double tmin, double tmax, std::vector<double>& out, TraceStats& stats) {
+  const Ray& ray = request.ray;
+  const RootMode mode = request.mode;
   thread_local std::vector<accel::SupportInterval> intervals;
   intervals.clear();
-  ++stats.rays;
   surface.index->intersect(ray.origin, ray.direction, tmin, tmax, intervals);
   // Fit each support's crossing whole: its ends are the zeros the paper's fit relies on.
   stats.primitives += intervals.size();
-  if (intervals.empty()) return;
+  if (intervals.empty()) return false;
+  if (surface.spheres_only) {
+    const size_t found = out.size();
+    sweep_spheres(surface, request, intervals, tmin, tmax, out, stats);
+    return out.size() > found;
+  }
   std::sort(intervals.begin(), intervals.end(),
             [](const auto& a, const auto& b) { return a.enter < b.enter; });
   RayTracer tracer(surface, ray, stats);
@@ -328,9 +337,62 @@ void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double 
     }
     if (intervals[begin].enter > tmax) break;
     const size_t found = out.size();
-    if (reach >= tmin) tracer.solve_cluster(std::span(intervals).subspan(begin, end - begin), tmin, tmax, mode, out);
-    if (mode != RootMode::all && out.size() > found) return;
+    const auto cluster = std::span(intervals).subspan(begin, end - begin);
+    if (reach >= tmin) {
+      if (only_spheres(surface, cluster)) {
+        sweep_spheres(surface, request, cluster, tmin, tmax, out, stats);
+      } else {
+        tracer.solve_cluster(cluster, tmin, tmax, mode, out);
+      }
+    }
+    if (mode != RootMode::all && out.size() > found) return true;
     begin = end;
+  }
+  return false;
+}
+
+// Narrows [tmin, tmax] to the box (the slab test); false when the ray misses it.
+bool clip_to_box(const Ray& ray, const Box3& box, double& tmin, double& tmax) {
+  if (box.empty()) return false;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double o = ray.origin[axis], d = ray.direction[axis];
+    if (d == 0.0) {
+      if (o < box.lo[axis] || o > box.hi[axis]) return false;
+      continue;
+    }
+    double t0 = (box.lo[axis] - o) / d, t1 = (box.hi[axis] - o) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    tmin = std::max(tmin, t0);
+    tmax = std::min(tmax, t1);
+  }
+  return tmin <= tmax;
+}
+
+}  // namespace
+
+// A search for the first root gathers the ray in growing chunks, front to back, where lines
+// cross many supports (Impl::gather_in_chunks): most rays that hit stop in the first chunks,
+// and never pay for the supports behind the hit. Each chunk is solved on its own, from every
+// support that crosses it.
+void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
+                RootMode mode, std::vector<double>& out, TraceStats& stats,
+                std::optional<Vec3>* first_gradient) {
+  ++stats.rays;
+  const SphereSweepRequest request{ray, mode, first_gradient};
+  if (mode == RootMode::all || !surface.gather_in_chunks) {
+    solve_range(surface, request, tmin, tmax, out, stats);
+    return;
+  }
+  // The supports' box bounds the field's reach; its slack keeps every crossed support in.
+  const Box3 bounds = surface.index->bounds();
+  const double slack = 1e-9 * glm::length(bounds.extent());
+  const Box3 grown{bounds.lo - Vec3(slack), bounds.hi + Vec3(slack)};
+  if (!clip_to_box(ray, grown, tmin, tmax)) return;
+  double length = kFirstChunk * (tmax - tmin);
+  for (double t0 = tmin;; length *= 2.0) {
+    const double t1 = tmax - t0 > 1.5 * length ? t0 + length : tmax;
+    if (solve_range(surface, request, t0, t1, out, stats) || t1 >= tmax) return;
+    t0 = t1;
   }
 }
 

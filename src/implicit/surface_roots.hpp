@@ -3,7 +3,9 @@
 // ray crosses, fit each one's field on its interval with a degree-6 polynomial (Eqs. 13-19),
 // bound the fit's error and subdivide where it is too large, sum the fits piecewise, isolate
 // the roots of each piece by Bézier clipping against the error band, and polish every root
-// on the exact field.
+// on the exact field. Stretches of the ray where only spheres (points, blob spheres) reach
+// need no fit: their field is exactly a quartic per piece (sphere_sweep.hpp).
+#include <optional>
 #include <vector>
 
 #include "implicit/convolution_surface.hpp"
@@ -16,7 +18,11 @@ enum class RootMode {
   any,    // whether there is one (shadow rays): the first one, found the same way
 };
 
+// Appends the roots in [tmin, tmax] as `mode` asks. With RootMode first and `first_gradient`,
+// the exact gradient at the root is put there when the finder had it at hand (the sphere
+// sweep does); it is left empty otherwise.
 void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
-                RootMode mode, std::vector<double>& out, TraceStats& stats);
+                RootMode mode, std::vector<double>& out, TraceStats& stats,
+                std::optional<Vec3>* first_gradient = nullptr);
 
 }  // namespace convray::implicit

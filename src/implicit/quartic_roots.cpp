@@ -1,0 +1,142 @@
+#include "implicit/quartic_roots.hpp"
+
+#include <cmath>
+
+namespace convray::implicit {
+namespace {
+
+using Control = std::array<double, 5>;
+
+// Sign changes along the control points, zeros skipped (Descartes' convention).
+int sign_variations(const Control& b) {
+  int count = 0;
+  double last = 0.0;
+  for (double x : b) {
+    if (x == 0.0) continue;
+    if (last != 0.0 && (x < 0.0) != (last < 0.0)) ++count;
+    last = x;
+  }
+  return count;
+}
+
+// De Casteljau at the middle: the control points of each half.
+void halve(const Control& b, Control& left, Control& right) {
+  Control t = b;
+  left[0] = t[0];
+  right[4] = t[4];
+  for (int level = 1; level <= 4; ++level) {
+    for (int j = 0; j <= 4 - level; ++j) t[j] = 0.5 * (t[j] + t[j + 1]);
+    left[level] = t[0];
+    right[4 - level] = t[4 - level];
+  }
+}
+
+bool differ(double a, double b) { return (a < 0.0) != (b < 0.0); }
+
+class Isolator {
+ public:
+  Isolator(const Quartic& q, const QuarticRootOptions& options, std::vector<double>& out)
+      : q_(q), options_(options), out_(out) {}
+
+  int found() const { return found_; }
+
+  // [lo, hi] with control points b (b[0] = q(lo), b[4] = q(hi)).
+  void search(const Control& b, double lo, double hi, int depth) {
+    if (done()) return;
+    if (b[0] == 0.0) push(lo);
+    const int variations = sign_variations(b);
+    if (variations == 0) {
+      if (b[4] == 0.0) push(hi);
+      return;
+    }
+    if (variations == 1 && b[0] != 0.0 && b[4] != 0.0) {
+      push(polish(lo, hi, b[0], b[4]));
+      return;
+    }
+    const double mid = 0.5 * (lo + hi);
+    if (hi - lo <= options_.resolution || depth >= 64 || !(mid > lo && mid < hi)) {
+      unresolved(b, lo, mid, hi);
+      return;
+    }
+    Control left, right;
+    halve(b, left, right);
+    search(left, lo, mid, depth + 1);
+    search(right, mid, hi, depth + 1);
+  }
+
+ private:
+  bool done() const { return options_.first_only && found_ > 0; }
+
+  void push(double v) {
+    if (done() || (found_ > 0 && v <= out_.back())) return;  // a shared end, seen already
+    out_.push_back(v);
+    ++found_;
+  }
+
+  // Roots closer together than the resolution: an odd count crosses once; an even count
+  // crosses twice where the middle has the other sign, or only touches zero.
+  void unresolved(const Control& b, double lo, double mid, double hi) {
+    if (b[0] == 0.0 || b[4] == 0.0) {
+      if (b[4] == 0.0) push(hi);
+      return;
+    }
+    if (differ(b[0], b[4])) {
+      push(polish(lo, hi, b[0], b[4]));
+      return;
+    }
+    const double at_mid = q_(mid);
+    if (!differ(at_mid, b[0])) return;
+    push(polish(lo, mid, b[0], at_mid));
+    push(polish(mid, hi, at_mid, b[4]));
+  }
+
+  // Newton's method from the regula falsi guess, every step kept inside the bracket [a, b]
+  // over which q changes sign (bisection when Newton leaves it or stalls).
+  double polish(double a, double b, double fa, double fb) const {
+    double v = a - fa * (b - a) / (fb - fa);
+    if (!(v > a && v < b)) v = 0.5 * (a + b);
+    double width = b - a;
+    for (int iteration = 0; iteration < 100 && b - a > options_.tolerance; ++iteration) {
+      const double fv = q_(v);
+      if (fv == 0.0) return v;
+      if (differ(fv, fa)) {
+        b = v;
+      } else {
+        a = v;
+        fa = fv;
+      }
+      const double slope = q_.slope(v);
+      double next = slope != 0.0 ? v - fv / slope : a;
+      // Outside the bracket, or a bracket that failed to halve in four steps: bisect.
+      bool bisect = !(next > a && next < b);
+      if (iteration % 4 == 3) {
+        bisect = bisect || b - a > 0.5 * width;
+        width = b - a;
+      }
+      if (bisect) {
+        next = 0.5 * (a + b);
+      } else if (std::abs(next - v) <= options_.tolerance) {
+        return next;
+      }
+      v = next;
+    }
+    return v;
+  }
+
+  const Quartic& q_;
+  const QuarticRootOptions& options_;
+  std::vector<double>& out_;
+  int found_ = 0;
+};
+
+}  // namespace
+
+int quartic_roots(const Quartic& q, double width, const QuarticRootOptions& options,
+                  std::vector<double>& out) {
+  if (!(width > 0.0)) return 0;
+  Isolator isolator(q, options, out);
+  isolator.search(bernstein(q, width), 0.0, width, 0);
+  return isolator.found();
+}
+
+}  // namespace convray::implicit
