@@ -48,7 +48,9 @@ class Parser {
   bool at(std::string_view text);
   // Consumes the next token if it is `text`.
   bool accept(std::string_view text);
-  // Consumes `text` or fails with "expected TEXT in WHAT, found ...".
+  // Consumes `text` or fails with "expected TEXT in WHAT, found ...". A `what` that starts
+  // with its own preposition ("to close sphere (opened at 2:1)", "after ...") is used as it
+  // is: "expected '}' to close sphere (opened at 2:1), found 'texure'".
   Token expect(std::string_view text, std::string_view what);
 
   // --- Expressions, evaluated.
@@ -58,6 +60,9 @@ class Parser {
   Vec3 parse_vector();            // a vector expression; a float f is promoted to <f, f, f>
   scene::Color parse_color();     // colour keywords and expressions: rgb, rgbf, red ..., srgb
   std::string parse_string();     // a string expression (concat, str, ...)
+  // A float inside `< >` that an item writes out itself (matrix <m00, ..., m32>): a bare '>'
+  // ends it instead of comparing, as in the core's own vector literals.
+  double parse_float_in_angle_brackets();
   // After `[`, `(`: the optional comma between items, as POV-Ray accepts it.
   void accept_comma() { accept(","); }
 
@@ -80,6 +85,24 @@ class Parser {
 
   // Global identifiers after parsing (for `convray field scene.pov --object NAME`).
   const std::map<std::string, Value>& globals() const;
+
+  // " (did you mean 'foo'?)" when a declared identifier or reserved word is a likely typo
+  // of `name`, else "": for messages about unknown words.
+  std::string did_you_mean(std::string_view name) const;
+
+  // Item parsers that recurse (CSG in CSG, ...) hold one per level: input nested absurdly
+  // deep then fails with an error instead of overflowing the stack. Expressions and
+  // directives count into the same limit.
+  class NestingGuard {
+   public:
+    explicit NestingGuard(Parser& parser);
+    ~NestingGuard();
+    NestingGuard(const NestingGuard&) = delete;
+    NestingGuard& operator=(const NestingGuard&) = delete;
+
+   private:
+    Parser& parser_;
+  };
 
   struct Impl;
 

@@ -1,0 +1,207 @@
+#include "sdl/convolution_components.hpp"
+
+#include <exception>
+#include <glm/geometric.hpp>
+
+#include "mesh/load.hpp"
+#include "sdl/component_modifiers.hpp"
+#include "sdl/item_helpers.hpp"
+
+namespace convray::sdl::items {
+
+namespace {
+
+using Kind = scene::Implicit::Kind;
+
+constexpr std::string_view kComponentWords[] = {"mesh", "triangle", "segment", "arc", "point"};
+
+// `strength s`, `radius r`, transforms and a texture, up to the component's `}`.
+void parse_component_tail(Parser& parser, Block& block, PendingComponent& component,
+                          ComponentModifiers& modifiers) {
+  static constexpr std::string_view kWords[] = {"strength", "radius", "translate", "rotate",
+                                                "scale",    "matrix", "transform", "texture",
+                                                "pigment",  "finish", "normal"};
+  while (block.more()) {
+    if (accept_word(parser, "strength")) {
+      component.strength = float_param(parser, "strength");
+    } else if (at_word(parser, "radius")) {
+      const SourceLoc loc = take_keyword(parser);
+      const double radius = float_param(parser, "radius");
+      if (!(radius > 0.0)) {
+        parser.fail(loc, "convolution " + block.name() + " radius must be positive, found " +
+                             number_text(radius));
+      }
+      component.radius = radius;
+    } else if (!modifiers.parse()) {
+      block.unexpected(kWords);
+    }
+  }
+  component.radius_scale = modifiers.scale();
+  component.texture = modifiers.texture();
+}
+
+std::vector<field::Triangle> load_mesh_triangles(Parser& parser, const SourceLoc& loc,
+                                                 const std::string& name) {
+  const std::string path = parser.resolve_file(name, loc);
+  try {
+    const mesh::LoadedMesh loaded = mesh::load_mesh(path);
+    std::vector<field::Triangle> triangles;
+    triangles.reserve(loaded.soup.size());
+    for (size_t t = 0; t < loaded.soup.size(); ++t) {
+      const auto corners = loaded.soup.corners(t);
+      triangles.push_back({corners[0], corners[1], corners[2]});
+    }
+    return triangles;
+  } catch (const std::exception& error) {  // InputError from the readers, or out of memory
+    parser.fail(loc, "cannot load mesh \"" + name + "\": " + error.what());
+  }
+}
+
+void parse_mesh_component(Parser& parser, Block& block, PendingComponent& component) {
+  const std::string name = parser.parse_string();
+  ComponentModifiers modifiers(parser, "convolution mesh");
+  parse_component_tail(parser, block, component, modifiers);
+  component.triangles = load_mesh_triangles(parser, component.loc, name);
+  const scene::Transform& transform = modifiers.transform();
+  if (transform.is_identity()) return;
+  for (field::Triangle& triangle : component.triangles) {
+    triangle = {transform.point(triangle.a), transform.point(triangle.b),
+                transform.point(triangle.c)};
+  }
+}
+
+void parse_triangle_component(Parser& parser, Block& block, PendingComponent& component) {
+  field::Triangle triangle;
+  triangle.a = vector_param(parser, "corner 1");
+  parser.accept_comma();
+  triangle.b = vector_param(parser, "corner 2");
+  parser.accept_comma();
+  triangle.c = vector_param(parser, "corner 3");
+  if (glm::cross(triangle.b - triangle.a, triangle.c - triangle.a) == Vec3(0.0)) {
+    parser.fail(component.loc, "convolution triangle: its corners are collinear");
+  }
+  ComponentModifiers modifiers(parser, "convolution triangle");
+  parse_component_tail(parser, block, component, modifiers);
+  const scene::Transform& transform = modifiers.transform();
+  component.triangles = {
+      {transform.point(triangle.a), transform.point(triangle.b), transform.point(triangle.c)}};
+  component.single_triangle = true;
+}
+
+void parse_segment_component(Parser& parser, Block& block, PendingComponent& component) {
+  Vec3 a = vector_param(parser, "end point 1");
+  parser.accept_comma();
+  Vec3 b = vector_param(parser, "end point 2");
+  if (a == b) parser.fail(component.loc, "convolution segment: its two end points coincide");
+  ComponentModifiers modifiers(parser, "convolution segment");
+  parse_component_tail(parser, block, component, modifiers);
+  component.segment = {modifiers.transform().point(a), modifiers.transform().point(b)};
+}
+
+void parse_arc_component(Parser& parser, Block& block, PendingComponent& component) {
+  std::array<Vec3, 3> points;
+  const char* names[] = {"the arc's first point", "the arc's middle point", "the arc's last point"};
+  for (size_t k = 0; k < 3; ++k) {
+    if (k > 0) parser.accept_comma();
+    points[k] = vector_param(parser, names[k]);
+  }
+  ComponentModifiers modifiers(parser, "convolution arc");
+  parse_component_tail(parser, block, component, modifiers);
+  for (Vec3& p : points) p = modifiers.transform().point(p);
+  if (!field::arc_through(points[0], points[1], points[2], component.arc)) {
+    parser.fail(component.loc,
+                "convolution arc: its three points are collinear (or two coincide), so no "
+                "circle passes through them; use a segment");
+  }
+}
+
+void parse_point_component(Parser& parser, Block& block, PendingComponent& component) {
+  const Vec3 center = vector_param(parser, "center");
+  ComponentModifiers modifiers(parser, "convolution point");
+  parse_component_tail(parser, block, component, modifiers);
+  component.point = modifiers.transform().point(center);
+}
+
+}  // namespace
+
+bool at_convolution_component(Parser& parser) { return at_any_word(parser, kComponentWords); }
+
+PendingComponent parse_convolution_component(Parser& parser) {
+  const std::string word = parser.peek().text;
+  PendingComponent component;
+  component.loc = take_keyword(parser);
+  Block block(parser, word, component.loc);
+  if (word == "mesh") {
+    component.kind = Kind::mesh;
+    parse_mesh_component(parser, block, component);
+  } else if (word == "triangle") {
+    component.kind = Kind::mesh;
+    parse_triangle_component(parser, block, component);
+  } else if (word == "segment") {
+    component.kind = Kind::segment;
+    parse_segment_component(parser, block, component);
+  } else if (word == "arc") {
+    component.kind = Kind::arc;
+    parse_arc_component(parser, block, component);
+  } else {
+    component.kind = Kind::point;
+    parse_point_component(parser, block, component);
+  }
+  return component;
+}
+
+namespace {
+
+bool same_weight(const implicit::Weight& a, const implicit::Weight& b) {
+  return a.strength == b.strength && a.radius == b.radius;
+}
+
+// Appends `component` to the vectors of `implicit` and notes its place in listing order.
+void add_component(PendingComponent& component, const implicit::Weight& weight,
+                   scene::Implicit& implicit) {
+  implicit::ConvolutionObject& object = implicit.object;
+  size_t index = 0;
+  switch (component.kind) {
+    case Kind::mesh:
+      index = object.meshes.size();
+      object.meshes.push_back({std::move(component.triangles), weight});
+      break;
+    case Kind::segment:
+      index = object.segments.size();
+      object.segments.push_back({component.segment, weight});
+      break;
+    case Kind::arc:
+      index = object.arcs.size();
+      object.arcs.push_back({component.arc, weight});
+      break;
+    default:
+      index = object.points.size();
+      object.points.push_back({component.point, weight});
+      break;
+  }
+  add_component_texture(implicit, component.texture);
+  implicit.component_order.emplace_back(component.kind, index);
+}
+
+}  // namespace
+
+void resolve_components(std::vector<PendingComponent>& components,
+                        const ConvolutionDefaults& defaults, scene::Implicit& implicit) {
+  bool last_is_triangle_group = false;
+  for (PendingComponent& component : components) {
+    const implicit::Weight weight{
+        component.strength.value_or(defaults.strength),
+        component.radius.value_or(defaults.radius) * component.radius_scale};
+    const bool groupable = component.single_triangle && !component.texture;
+    if (groupable && last_is_triangle_group &&
+        same_weight(implicit.object.meshes.back().weight, weight)) {
+      auto& triangles = implicit.object.meshes.back().triangles;
+      triangles.insert(triangles.end(), component.triangles.begin(), component.triangles.end());
+      continue;
+    }
+    add_component(component, weight, implicit);
+    last_is_triangle_group = groupable;
+  }
+}
+
+}  // namespace convray::sdl::items

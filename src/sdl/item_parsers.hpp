@@ -1,0 +1,103 @@
+#pragma once
+// The item parsers behind parse_item and parse_statement (items.hpp), one file per concept.
+// Each `parse_X` is called with its keyword at peek() and consumes the whole item.
+#include <optional>
+#include <string_view>
+
+#include "scene/object.hpp"
+#include "scene/scene.hpp"
+#include "scene/texture.hpp"
+#include "sdl/item_helpers.hpp"
+#include "sdl/parser.hpp"
+#include "sdl/value.hpp"
+
+namespace convray::sdl::items {
+
+// --- Objects (parse_object.cpp, parse_shapes.cpp, parse_mesh.cpp, parse_csg.cpp,
+// parse_blob.cpp, parse_convolution.cpp).
+
+// Whether the next token starts an object: a shape keyword, a CSG keyword or `object`.
+bool at_object(Parser& parser);
+Keywords object_words();  // for "did you mean"
+scene::ObjectPtr parse_object(Parser& parser);
+// POV-Ray objects convray does not have yet (text, lathe, isosurface, ...): parse_object
+// fails on them; a declaration gets an empty object and a warning instead, so that include
+// files that declare them (shapes.inc) can still be used.
+bool at_unsupported_object(Parser& parser);
+scene::ObjectPtr parse_unsupported_object_as_empty(Parser& parser);
+// `object { ... }` at the top level of a scene, where POV-Ray also lets it name a declared
+// light_source: adds the object or the light to `scene`.
+void parse_top_level_object(Parser& parser, scene::Scene& scene);
+// A top-level object without a texture gets the #default texture in force where it ends, as
+// in POV-Ray (CSG children without one inherit their parent's instead, in geometry/).
+scene::ObjectPtr with_default_texture(Parser& parser, scene::ObjectPtr object);
+
+scene::ObjectPtr parse_sphere(Parser& parser);
+scene::ObjectPtr parse_box(Parser& parser);
+scene::ObjectPtr parse_plane(Parser& parser);
+scene::ObjectPtr parse_cylinder(Parser& parser);
+scene::ObjectPtr parse_cone(Parser& parser);
+scene::ObjectPtr parse_torus(Parser& parser);
+scene::ObjectPtr parse_disc(Parser& parser);
+scene::ObjectPtr parse_triangle(Parser& parser);  // triangle and smooth_triangle
+scene::ObjectPtr parse_mesh(Parser& parser);
+scene::ObjectPtr parse_mesh2(Parser& parser);
+scene::ObjectPtr parse_csg(Parser& parser);  // union, intersection, difference, merge
+scene::ObjectPtr parse_blob(Parser& parser);
+scene::ObjectPtr parse_convolution(Parser& parser);
+
+// --- Textures (parse_texture.cpp, parse_pigment.cpp, parse_normal.cpp). Each starts from
+// `start` (a copy of what the item modifies: the object's current pigment, the defaults, ...);
+// a declared identifier first in the block replaces it.
+scene::Texture parse_texture(Parser& parser, const scene::Texture& start);
+scene::Pigment parse_pigment(Parser& parser, const scene::Pigment& start);
+scene::Finish parse_finish(Parser& parser, const scene::Finish& start);
+scene::Normal parse_normal(Parser& parser, const scene::Normal& start);
+scene::Interior parse_interior(Parser& parser, const scene::Interior& start);
+ColorMap parse_color_map(Parser& parser);  // color_map or colour_map
+
+// POV-Ray looks a value v up in a colour map by scanning for the first entry at or above v
+// and blending it with the entry before (below the first entry: its colour; at or above the
+// last: the last's colour), whatever order the values were written in (woods.inc has maps
+// that step back). Returns the map with ascending values that gives the same colour for
+// every v: entries the scan never stops at are dropped, the blends they start are kept.
+// Equal values in a row make a step.
+ColorMap ascending_equivalent(const ColorMap& map);
+
+// POV-Ray layers textures written one after another (`texture { A } texture { B }`: B drawn
+// over A, A seen through B's transparent parts). convray draws one layer: the later one,
+// unless it has transparent parts and the earlier one has none (then it is an overlay, and
+// its base is the better likeness).
+const scene::Texture& choose_texture_layer(const scene::Texture& earlier,
+                                           const scene::Texture& later);
+extern const char* const kLayeredTexturesWarning;
+
+// material { [M_ID] texture {...} interior {...} [transforms] }: the transforms move the
+// texture. A declared material is held as its texture (Value has no material yet), so
+// M_ID may also name a texture.
+struct ParsedMaterial {
+  std::optional<scene::Texture> texture;
+  std::optional<scene::Interior> interior;
+};
+ParsedMaterial parse_material(Parser& parser);
+
+// Where a texture is evaluated moves with the transforms applied after it: appended to the
+// pattern transforms of its pigment and normal.
+void move_texture(scene::Texture& texture, const scene::Transform& transform);
+scene::TexturePtr moved_texture(const scene::TexturePtr& texture,
+                                const scene::Transform& transform);
+// Moves every texture inside `object` (CSG children, mesh faces, blob and convolution
+// components; not the object's own texture), copying the shared records it changes.
+void move_inner_textures(scene::Object& object, const scene::Transform& transform);
+
+// --- Scene settings (parse_camera.cpp, parse_light.cpp, parse_atmosphere.cpp).
+scene::Camera parse_camera(Parser& parser);
+scene::Light parse_light(Parser& parser);
+// The light's modifiers up to the `}` of `block`, applied to `start`.
+scene::Light parse_light_modifiers(Parser& parser, Block& block, const scene::Light& start);
+scene::Color parse_background(Parser& parser);
+scene::Fog parse_fog(Parser& parser);
+scene::SkySphere parse_sky_sphere(Parser& parser);
+void parse_global_settings(Parser& parser, scene::GlobalSettings& settings);
+
+}  // namespace convray::sdl::items

@@ -1,0 +1,226 @@
+// Macros and user functions.
+//
+// A macro body is a range of the defining file's tokens, replayed in a new frame when the
+// macro is called; its parameters are #local values of a new scope, so #local inside the
+// body is local to the call. Arguments are passed by value (POV-Ray passes a bare identifier
+// by reference, so that a macro can assign to its caller's variable; here such an assignment
+// changes only the macro's copy). A parameter marked `optional` may be left out; it is then
+// not declared in the body (test it with #ifdef).
+//
+// `#declare F = function (a, b) { expression }` keeps the body's tokens the same way; a call
+// F(1, 2) evaluates the expression in a sealed frame (the expression may not run past the
+// closing brace) with a and b bound. Without a parameter list the parameters are x, y, z.
+#include <algorithm>
+#include <string>
+
+#include "sdl/parser_impl.hpp"
+
+namespace convray::sdl {
+void Parser::Impl::directive_macro(TokenRef at) {
+  auto macro = std::make_shared<Macro>();
+  macro->name = std::string(expect_identifier_raw("after #macro"));
+  macro->loc = loc(at);
+  if (!plain_symbol('(')) {
+    fail_here("expected '(' after '#macro " + macro->name + "', found " + describe(plain()));
+  }
+  advance();
+  while (!plain_symbol(')')) {
+    MacroParameter parameter;
+    if (plain().word == Word::optional) {
+      parameter.optional = true;
+      advance();
+    }
+    parameter.name =
+        std::string(expect_identifier_raw("as a parameter of macro '" + macro->name + "'"));
+    for (const MacroParameter& other : macro->parameters) {
+      if (other.name == parameter.name) {
+        fail_here("parameter '" + parameter.name + "' appears twice in macro '" + macro->name +
+                  "'");
+      }
+    }
+    macro->parameters.push_back(std::move(parameter));
+    if (plain_symbol(',')) {
+      advance();
+    } else if (!plain_symbol(')')) {
+      fail_here("expected ',' or ')' in the parameters of macro '" + macro->name + "', found " +
+                describe(plain()));
+    }
+  }
+  advance();  // ')'
+  Frame& frame = frames.back();
+  macro->file = frame.file;
+  macro->body_begin = frame.pos;
+  const auto opened_at = std::uint32_t(at.token - frame.file->tokens.data());
+  skip(0, SkipStop::end, opened_at);
+  macro->body_end = frames.back().pos - 1;  // the #end
+  // A name is one thing: the macro replaces a global variable or function of that name.
+  scopes.front().values.erase(macro->name);
+  functions.erase(macro->name);
+  macros[macro->name] = std::move(macro);
+}
+
+bool Parser::Impl::expand_if_macro(const LexToken& name) {
+  const auto found = macros.find(name.view());
+  if (found == macros.end()) return false;
+  if (lookup(name.view()) != nullptr) return false;  // a local of that name hides the macro
+  const std::shared_ptr<const Macro> macro = found->second;
+  const TokenRef at = ref();
+  advance();
+  call_macro(macro, at);
+  return true;
+}
+
+void Parser::Impl::call_macro(std::shared_ptr<const Macro> macro, TokenRef at) {
+  const std::string& name = macro->name;
+  const std::size_t wanted = macro->parameters.size();
+  const auto arity_error = [&](std::size_t found) {
+    return "macro '" + name + "' (defined at " + macro->loc.str() + ") takes " +
+           std::to_string(wanted) + " argument" + (wanted == 1 ? "" : "s") + ", found " +
+           std::to_string(found);
+  };
+  NestingLevel level(*this);  // arguments may call macros: M(M(M(...)))
+  expect_symbol('(', "after the macro name '" + name + "'");
+  std::vector<Value> arguments(wanted);
+  std::size_t count = 0;
+  if (!accept_symbol(')')) {
+    ScopedValue not_in_vector(angle_depth, 0);
+    for (;;) {
+      const TokenRef argument_at = ref();
+      const bool empty = at_symbol(',') || at_symbol(')');
+      if (count == wanted) {
+        // Count the rest for the message.
+        std::size_t found = count + 1;
+        if (!empty) parse_rvalue();
+        while (accept_symbol(',')) {
+          ++found;
+          if (!at_symbol(',') && !at_symbol(')')) parse_rvalue();
+        }
+        fail(argument_at, arity_error(found));
+      }
+      if (empty) {
+        if (!macro->parameters[count].optional) {
+          fail(argument_at,
+               "missing argument '" + macro->parameters[count].name + "' of macro '" + name + "'");
+        }
+      } else {
+        arguments[count] = parse_rvalue();
+      }
+      ++count;
+      if (accept_symbol(',')) continue;
+      expect_symbol(')', "after the arguments of macro '" + name + "'");
+      break;
+    }
+  }
+  for (std::size_t i = count; i < wanted; ++i) {
+    if (!macro->parameters[i].optional) fail(at, arity_error(count));
+  }
+  if (macro_depth >= options.max_macro_depth) {
+    fail(at, "macro '" + name + "' called more than " + std::to_string(options.max_macro_depth) +
+                 " levels deep: runaway recursion?");
+  }
+  const std::uint64_t scope = push_scope();
+  for (std::size_t i = 0; i < wanted; ++i) {
+    if (arguments[i].is_set()) {
+      scopes.back().values.insert_or_assign(macro->parameters[i].name, std::move(arguments[i]));
+    }
+  }
+  Frame& frame = push_frame(Frame::Kind::macro, macro->file, macro->body_begin, macro->body_end);
+  frame.scope = scope;
+  frame.name = name;
+  ++macro_depth;
+}
+
+std::uint32_t Parser::Impl::find_closing_brace(std::uint32_t opened_at) {
+  const Frame& frame = frames.back();
+  int depth = 0;
+  for (std::uint32_t i = opened_at; i < frame.end; ++i) {
+    const LexToken& t = frame.file->tokens[i];
+    if (is_symbol(t, '{')) ++depth;
+    if (is_symbol(t, '}') && --depth == 0) return i;
+  }
+  fail(token_loc(frame.file, opened_at), "this '{' is never closed");
+}
+
+void Parser::Impl::declare_function(const std::string& name) {
+  advance();  // function
+  auto function = std::make_shared<UserFunction>();
+  function->name = name;
+  if (plain_symbol('(')) {
+    advance();
+    while (!plain_symbol(')')) {
+      const LexToken& t = plain();
+      if (t.kind != LexKind::identifier && t.kind != LexKind::keyword) {
+        fail_here("expected a parameter name in function '" + name + "', found " + describe(t));
+      }
+      function->parameters.emplace_back(t.view());
+      advance();
+      if (plain_symbol(',')) {
+        advance();
+      } else if (!plain_symbol(')')) {
+        fail_here("expected ',' or ')' in the parameters of function '" + name + "', found " +
+                  describe(plain()));
+      }
+    }
+    advance();
+  } else {
+    function->parameters = {"x", "y", "z"};
+  }
+  if (!plain_symbol('{')) {
+    fail_here("expected '{' to start the body of function '" + name + "', found " +
+              describe(plain()));
+  }
+  Frame& frame = frames.back();
+  const std::uint32_t open = frame.pos;
+  const std::uint32_t close = find_closing_brace(open);
+  function->file = frame.file;
+  function->body_begin = open + 1;
+  function->body_end = close;
+  frame.pos = close + 1;
+  moved();
+  scopes.front().values.erase(name);
+  macros.erase(name);
+  functions[name] = std::move(function);
+}
+
+Value Parser::Impl::call_function(const UserFunction& function, TokenRef at) {
+  const std::size_t wanted = function.parameters.size();
+  expect_symbol('(', "after the function name '" + function.name + "'");
+  std::vector<Value> arguments;
+  {
+    ScopedValue not_in_vector(angle_depth, 0);
+    if (!accept_symbol(')')) {
+      for (;;) {
+        arguments.push_back(parse_expression());
+        if (accept_symbol(',')) continue;
+        expect_symbol(')', "after the arguments of function '" + function.name + "'");
+        break;
+      }
+    }
+  }
+  if (arguments.size() != wanted) {
+    fail(at, "function '" + function.name + "' takes " + std::to_string(wanted) + " argument" +
+                 (wanted == 1 ? "" : "s") + ", found " + std::to_string(arguments.size()));
+  }
+  NestingLevel level(*this);
+  const std::uint64_t scope = push_scope();
+  for (std::size_t i = 0; i < wanted; ++i) {
+    scopes.back().values.insert_or_assign(function.parameters[i], std::move(arguments[i]));
+  }
+  const std::size_t depth = frames.size();
+  Frame& frame =
+      push_frame(Frame::Kind::function, function.file, function.body_begin, function.body_end);
+  frame.name = function.name;
+  ++function_depth;
+  Value result = parse_expression();
+  if (plain().kind != LexKind::end || frames.size() != depth + 1) {
+    fail_here("expected the end of the body of function '" + function.name + "', found " +
+              describe(plain()));
+  }
+  --function_depth;
+  frames.pop_back();
+  moved();
+  pop_scope(scope);
+  return result;
+}
+
+}  // namespace convray::sdl

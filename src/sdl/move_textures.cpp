@@ -1,0 +1,67 @@
+// Textures are evaluated in world space (scene/texture.hpp), so every transform applied to an
+// object after a texture was given must be appended to that texture's pattern transforms,
+// including the textures of everything inside the object.
+#include <type_traits>
+
+#include "sdl/item_parsers.hpp"
+
+namespace convray::sdl::items {
+
+void move_texture(scene::Texture& texture, const scene::Transform& transform) {
+  texture.pigment.space.transform = texture.pigment.space.transform.then(transform);
+  texture.normal.space.transform = texture.normal.space.transform.then(transform);
+}
+
+scene::TexturePtr moved_texture(const scene::TexturePtr& texture,
+                                const scene::Transform& transform) {
+  if (!texture) return texture;
+  scene::Texture copy = *texture;
+  move_texture(copy, transform);
+  return std::make_shared<const scene::Texture>(std::move(copy));
+}
+
+namespace {
+
+bool has_inner_textures(const scene::Object& object);
+
+bool has_textures(const scene::Object& object) {
+  return object.texture || has_inner_textures(object);
+}
+
+bool has_inner_textures(const scene::Object& object) {
+  if (const auto* csg = std::get_if<scene::Csg>(&object.shape)) {
+    for (const scene::ObjectPtr& child : csg->children) {
+      if (has_textures(*child)) return true;
+    }
+    return false;
+  }
+  if (const auto* mesh = std::get_if<scene::TriangleMesh>(&object.shape)) {
+    return !mesh->textures.empty();
+  }
+  if (const auto* implicit = std::get_if<scene::Implicit>(&object.shape)) {
+    return !implicit->component_textures.empty();
+  }
+  return false;
+}
+
+}  // namespace
+
+void move_inner_textures(scene::Object& object, const scene::Transform& transform) {
+  if (auto* csg = std::get_if<scene::Csg>(&object.shape)) {
+    for (scene::ObjectPtr& child : csg->children) {
+      if (!has_textures(*child)) continue;  // shared as it is: nothing in it moves
+      auto copy = std::make_shared<scene::Object>(*child);
+      copy->texture = moved_texture(copy->texture, transform);
+      move_inner_textures(*copy, transform);
+      child = std::move(copy);
+    }
+  } else if (auto* mesh = std::get_if<scene::TriangleMesh>(&object.shape)) {
+    for (scene::TexturePtr& texture : mesh->textures) texture = moved_texture(texture, transform);
+  } else if (auto* implicit = std::get_if<scene::Implicit>(&object.shape)) {
+    for (scene::ComponentTexture& component : implicit->component_textures) {
+      component.texture = moved_texture(component.texture, transform);
+    }
+  }
+}
+
+}  // namespace convray::sdl::items

@@ -1,0 +1,115 @@
+// finish { [F_ID] ambient, diffuse, brilliance, phong, phong_size, specular, roughness,
+//          reflection, metallic, emission, ... }
+#include <algorithm>
+
+#include "sdl/item_parsers.hpp"
+
+namespace convray::sdl::items {
+
+namespace {
+
+constexpr std::string_view kFinishWords[] = {
+    "ambient",   "diffuse",    "brilliance", "phong",    "phong_size",      "specular",
+    "roughness", "reflection", "metallic",   "emission", "conserve_energy", "reflection_exponent",
+    "crand",     "irid",       "subsurface", "fresnel"};
+
+// `diffuse`, `phong` and `specular` accept POV-Ray 3.7's `albedo` before their value.
+double parse_coefficient(Parser& parser, const std::string& word) {
+  if (at_word(parser, "albedo")) {
+    warn_once(parser, take_keyword(parser),
+              "albedo is ignored: the value after it is used as the plain " + word);
+  }
+  return float_param(parser, word);
+}
+
+// `reflection f`, `reflection rgb <...>`, `reflection min, max` or
+// `reflection { [min,] max [fresnel] [falloff f] [exponent f] [metallic [f]] }`: the
+// maximum colour is kept (variable reflection is not rendered).
+void parse_reflection(Parser& parser, const SourceLoc& loc, scene::Finish& finish) {
+  const bool block_form = parser.at("{");
+  std::optional<Block> block;
+  if (block_form) block.emplace(parser, "reflection", loc);
+  Vec3 reflection = rgb_param(parser, "reflection");
+  if (parser.accept(",")) {
+    reflection = rgb_param(parser, "reflection");
+    warn_once(parser, loc, "variable reflection: the maximum is used at every angle");
+  }
+  finish.reflection = reflection;
+  if (!block_form) return;
+  static constexpr std::string_view kWords[] = {"fresnel", "falloff", "exponent", "metallic"};
+  while (block->more()) {
+    const SourceLoc item_loc = parser.peek().loc;
+    if (accept_word(parser, "fresnel")) {
+      optional_bool(parser);
+      warn_once(parser, item_loc, "fresnel reflection is not rendered: the reflection is constant");
+    } else if (accept_word(parser, "falloff") || accept_word(parser, "exponent")) {
+      float_param(parser, "the reflection setting");
+      warn_once(parser, item_loc, "reflection falloff and exponent are ignored");
+    } else if (accept_word(parser, "metallic")) {
+      const double metallic = at_float_start(parser) ? float_param(parser, "metallic") : 1.0;
+      finish.metallic = std::max(finish.metallic, metallic);
+      warn_once(parser, item_loc, "metallic reflection is approximated by the finish's metallic");
+    } else {
+      block->unexpected(kWords);
+    }
+  }
+}
+
+// The finish items convray parses but does not render.
+void parse_ignored_finish_item(Parser& parser, const std::string& word, const SourceLoc& loc) {
+  if (word == "irid" || word == "subsurface") {
+    skip_braced(parser, word, loc);
+  } else if (word == "conserve_energy" || word == "fresnel") {
+    optional_bool(parser);
+  } else {
+    float_param(parser, word);
+  }
+  warn_once(parser, loc, "'" + word + "' is ignored by convray");
+}
+
+}  // namespace
+
+scene::Finish parse_finish(Parser& parser, const scene::Finish& start) {
+  const SourceLoc loc = take_keyword(parser);
+  Block block(parser, "finish", loc);
+  scene::Finish finish = start;
+  if (auto declared = accept_declared<scene::Finish>(parser, "a finish")) finish = *declared;
+  while (block.more()) {
+    if (!at_any_word(parser, kFinishWords)) block.unexpected(kFinishWords);
+    const std::string word = parser.peek().text;
+    const SourceLoc item_loc = take_keyword(parser);
+    if (word == "ambient") {
+      finish.ambient = rgb_param(parser, "ambient");
+    } else if (word == "emission") {
+      finish.emission = rgb_param(parser, "emission");
+    } else if (word == "diffuse") {
+      finish.diffuse = parse_coefficient(parser, word);
+      if (parser.accept(",")) {
+        float_param(parser, "diffuse's back-side value");
+        warn_once(parser, item_loc, "diffuse's back-side illumination is ignored");
+      }
+    } else if (word == "phong") {
+      finish.phong = parse_coefficient(parser, word);
+    } else if (word == "specular") {
+      finish.specular = parse_coefficient(parser, word);
+    } else if (word == "brilliance") {
+      finish.brilliance = float_param(parser, word);
+    } else if (word == "phong_size") {
+      finish.phong_size = float_param(parser, word);
+    } else if (word == "roughness") {
+      finish.roughness = float_param(parser, word);
+      if (!(finish.roughness > 0.0)) {
+        parser.fail(item_loc, "roughness must be positive, found " + number_text(finish.roughness));
+      }
+    } else if (word == "metallic") {
+      finish.metallic = at_float_start(parser) ? float_param(parser, word) : 1.0;
+    } else if (word == "reflection") {
+      parse_reflection(parser, item_loc, finish);
+    } else {
+      parse_ignored_finish_item(parser, word, item_loc);
+    }
+  }
+  return finish;
+}
+
+}  // namespace convray::sdl::items

@@ -1,0 +1,281 @@
+// Parser's public API over Parser::Impl (parser_impl.hpp), and the context every part of
+// the parse shares: files, messages, include search.
+#include "sdl/parser.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "sdl/diagnostics.hpp"
+#include "sdl/items.hpp"
+#include "sdl/parser_impl.hpp"
+
+namespace convray::sdl {
+namespace {
+
+// Reads a whole file; false when it cannot be read.
+bool read_file(const std::string& path, std::string& text) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return false;
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream) return false;
+  std::ostringstream contents;
+  contents << stream.rdbuf();
+  text = std::move(contents).str();
+  return !stream.bad();
+}
+
+}  // namespace
+
+// --- Impl: context ------------------------------------------------------------------------
+
+Parser::Impl::Impl(Parser& owner_parser, ParseOptions parse_options)
+    : owner(owner_parser), options(std::move(parse_options)) {
+  push_scope();  // the global scope
+  for (const auto& [name, value] : options.declares) declare_global(name, make_value(value));
+}
+
+void Parser::Impl::fail(const SourceLoc& at, const std::string& message) const {
+  const auto file = files_by_name.find(at.file);
+  if (file == files_by_name.end()) throw InputError(at, message);
+  throw InputError(at, with_source_line(message, file->second->text, at.line, at.column));
+}
+
+void Parser::Impl::warn(const SourceLoc& at, const std::string& message) {
+  const auto file = files_by_name.find(at.file);
+  const std::string text = file == files_by_name.end()
+                               ? message
+                               : with_source_line(message, file->second->text, at.line, at.column);
+  warnings.push_back(at.str() + ": " + text);
+}
+
+void Parser::Impl::enter_nesting() {
+  if (++nesting_depth > kMaxNestingDepth) {
+    --nesting_depth;
+    fail_here("nested more than " + std::to_string(kMaxNestingDepth) +
+              " levels deep (expressions, items or directives)");
+  }
+}
+
+std::string Parser::Impl::resolve(const std::string& name, const SourceLoc& at,
+                                  bool must_exist) const {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path given(name);
+  std::vector<fs::path> folders;
+  if (given.is_absolute()) {
+    folders.emplace_back();
+  } else {
+    // The folder of the file being read, then +L paths, then POV-Ray's installed includes.
+    const fs::path current = fs::path(frames.empty() ? std::string() : frames.back().file->name);
+    folders.push_back(current.parent_path());
+    for (const std::string& folder : options.library_paths) folders.emplace_back(folder);
+    for (const std::string& folder : options.system_include_paths) folders.emplace_back(folder);
+  }
+  for (const fs::path& folder : folders) {
+    const fs::path candidate = folder.empty() ? given : folder / given;
+    if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
+  }
+  if (!must_exist) return {};
+  std::string searched;
+  for (const fs::path& folder : folders) {
+    searched += searched.empty() ? "" : ", ";
+    searched += folder.empty() ? std::string(".") : folder.string();
+  }
+  fail(at, "file not found: '" + name + "' (searched " + searched + ")");
+}
+
+const SourceFile& Parser::Impl::load_file(const std::string& path, const SourceLoc& at) {
+  if (const auto loaded = files_by_name.find(path); loaded != files_by_name.end()) {
+    return *loaded->second;
+  }
+  std::string text;
+  if (!read_file(path, text)) fail(at, "cannot read '" + path + "'");
+  std::unique_ptr<SourceFile> file = tokenize(path, std::move(text));
+  for (std::string& warning : file->warnings) warnings.push_back(std::move(warning));
+  file->warnings.clear();
+  const SourceFile& loaded = *file;
+  files_by_name.emplace(path, file.get());
+  files.push_back(std::move(file));
+  return loaded;
+}
+
+// --- Parser -------------------------------------------------------------------------------
+
+Parser::Parser(std::string file_name, std::string text, ParseOptions options)
+    : impl_(std::make_unique<Impl>(*this, std::move(options))) {
+  std::unique_ptr<SourceFile> file = tokenize(std::move(file_name), std::move(text));
+  Impl& impl = *impl_;
+  impl.warnings = std::move(file->warnings);
+  file->warnings.clear();
+  impl.files_by_name.emplace(file->name, file.get());
+  const SourceFile& scene = *file;
+  impl.files.push_back(std::move(file));
+  impl.push_frame(Frame::Kind::scene, &scene, 0, std::uint32_t(scene.tokens.size() - 1));
+}
+
+Parser::~Parser() = default;
+
+scene::Scene Parser::parse_scene() {
+  scene::Scene scene;
+  while (impl_->settle().kind != LexKind::end) {
+    const long long before = impl_->tokens_read;
+    parse_statement(*this, scene);
+    if (impl_->tokens_read == before) {
+      impl_->fail_here("expected a statement, found " + impl_->describe(impl_->settle()));
+    }
+  }
+  return scene;
+}
+
+const Token& Parser::peek() { return impl_->materialize(); }
+
+Token Parser::next() {
+  Token token = impl_->materialize();
+  impl_->advance();
+  return token;
+}
+
+bool Parser::at(std::string_view text) {
+  const LexToken& t = impl_->settle();
+  return (t.kind == LexKind::keyword || t.kind == LexKind::symbol) && t.view() == text;
+}
+
+bool Parser::accept(std::string_view text) {
+  if (!at(text)) return false;
+  impl_->advance();
+  return true;
+}
+
+Token Parser::expect(std::string_view text, std::string_view what) {
+  if (at(text)) return next();
+  // "in sphere"; a `what` that starts with its own preposition ("to close sphere ...") is
+  // used as it is.
+  static constexpr std::string_view kPrepositions[] = {"to ",  "in ", "after ",   "before ",
+                                                       "for ", "at ", "between ", "of "};
+  std::string context(what);
+  bool has_preposition = false;
+  for (std::string_view preposition : kPrepositions) {
+    has_preposition = has_preposition || what.substr(0, preposition.size()) == preposition;
+  }
+  if (!context.empty() && !has_preposition) context = "in " + context;
+  impl_->fail_here("expected '" + std::string(text) + "'" + (context.empty() ? "" : " ") + context +
+                   ", found " + impl_->describe(impl_->settle()));
+}
+
+Value Parser::parse_expression() { return impl_->parse_expression(); }
+
+double Parser::parse_float() {
+  impl_->settle();
+  const TokenRef at = impl_->ref();
+  return impl_->to_float(impl_->parse_expression(), at, "");
+}
+
+double Parser::parse_float_in_angle_brackets() {
+  ScopedValue in_vector(impl_->angle_depth, 1);
+  return parse_float();
+}
+
+int Parser::parse_int() {
+  impl_->settle();
+  const TokenRef at = impl_->ref();
+  const double value = impl_->to_float(impl_->parse_expression(), at, "");
+  return impl_->to_int(value, at, "");
+}
+
+Vec3 Parser::parse_vector() {
+  impl_->settle();
+  const TokenRef at = impl_->ref();
+  const Value value = impl_->parse_expression();
+  if (const double* f = value.get<double>()) return Vec3(*f);
+  if (const Vector* vector = value.get<Vector>()) return vector->xyz();
+  impl_->fail(at, "expected a vector, found " + type_name(value));
+}
+
+scene::Color Parser::parse_color() {
+  impl_->settle();
+  const TokenRef at = impl_->ref();
+  Value value = impl_->parse_expression();
+  Vector color;
+  if (const double* f = value.get<double>()) {
+    color.v = {*f, *f, *f, 0.0, 0.0};
+  } else if (const Vector* vector = value.get<Vector>()) {
+    color = *vector;
+  } else {
+    impl_->fail(at, "expected a colour, found " + type_name(value));
+  }
+  // Modifiers after a float or vector used as a colour: `pigment { 0.5 filter 0.2 }`.
+  const Value modified = impl_->apply_color_modifiers(make_value(Impl::to_color(color)));
+  return modified.get<Vector>()->as_color();
+}
+
+std::string Parser::parse_string() {
+  impl_->settle();
+  const TokenRef at = impl_->ref();
+  return impl_->to_string(impl_->parse_expression(), at, "");
+}
+
+const Value* Parser::peek_declared() {
+  const LexToken& t = impl_->settle();
+  if (t.kind != LexKind::identifier) return nullptr;
+  const Value* value = impl_->lookup(t.view());
+  if (value != nullptr && !impl_->deprecations.empty()) {
+    impl_->check_deprecated(t.view(), impl_->ref());
+  }
+  return value;
+}
+
+const ParseOptions& Parser::options() const { return impl_->options; }
+Defaults& Parser::defaults() { return impl_->defaults; }
+
+std::string Parser::resolve_file(const std::string& name, const SourceLoc& loc) const {
+  return impl_->resolve(name, loc, true);
+}
+
+void Parser::fail(const SourceLoc& loc, const std::string& message) const {
+  impl_->fail(loc, message);
+}
+
+void Parser::fail_here(const std::string& message) {
+  impl_->settle();
+  impl_->fail_here(message);
+}
+
+void Parser::warn(const SourceLoc& loc, const std::string& message) { impl_->warn(loc, message); }
+
+const std::vector<std::string>& Parser::warnings() const { return impl_->warnings; }
+
+const std::map<std::string, Value>& Parser::globals() const {
+  std::map<std::string, Value>& view = impl_->globals_view;
+  view.clear();
+  for (const auto& [name, value] : impl_->scopes.front().values) view.emplace(name, value);
+  return view;
+}
+
+std::string Parser::did_you_mean(std::string_view name) const { return impl_->did_you_mean(name); }
+
+Parser::NestingGuard::NestingGuard(Parser& parser) : parser_(parser) {
+  parser_.impl_->enter_nesting();
+}
+
+Parser::NestingGuard::~NestingGuard() { parser_.impl_->leave_nesting(); }
+
+// --- Whole scenes -------------------------------------------------------------------------
+
+ParseResult parse_file(const std::string& path, const ParseOptions& options) {
+  std::string text;
+  if (!read_file(path, text)) throw InputError({path}, "cannot read the scene file");
+  return parse_string(text, path, options);
+}
+
+ParseResult parse_string(const std::string& text, const std::string& name,
+                         const ParseOptions& options) {
+  Parser parser(name, text, options);
+  ParseResult result;
+  result.scene = parser.parse_scene();
+  result.globals = parser.globals();
+  result.warnings = parser.warnings();
+  return result;
+}
+
+}  // namespace convray::sdl

@@ -1,0 +1,137 @@
+#include "sdl/pattern_items.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+namespace convray::sdl::items {
+
+namespace {
+
+struct PatternKeyword {
+  std::string_view word;
+  scene::Pattern pattern;
+};
+
+constexpr PatternKeyword kPatterns[] = {
+    {"checker", scene::Pattern::checker}, {"gradient", scene::Pattern::gradient},
+    {"marble", scene::Pattern::marble},   {"wood", scene::Pattern::wood},
+    {"granite", scene::Pattern::granite}, {"agate", scene::Pattern::agate},
+    {"bozo", scene::Pattern::bozo},       {"radial", scene::Pattern::radial},
+    {"onion", scene::Pattern::onion},     {"leopard", scene::Pattern::leopard},
+    {"spotted", scene::Pattern::spotted}, {"ripples", scene::Pattern::ripples},
+    {"waves", scene::Pattern::waves},     {"wrinkles", scene::Pattern::wrinkles},
+    {"bumps", scene::Pattern::bumps},     {"dents", scene::Pattern::dents},
+};
+
+constexpr std::string_view kPatternNames[] = {
+    "checker", "gradient", "marble",  "wood",    "granite", "agate",    "bozo",  "radial",
+    "onion",   "leopard",  "spotted", "ripples", "waves",   "wrinkles", "bumps", "dents"};
+
+// POV-Ray patterns we know by name, so that they get "not supported yet" rather than
+// "unexpected".
+constexpr std::string_view kUnsupportedPatterns[] = {
+    "brick",      "hexagon",      "crackle",      "cells",         "spiral1",     "spiral2",
+    "mandel",     "julia",        "image_map",    "bump_map",      "function",    "pigment_pattern",
+    "object",     "density_file", "quilted",      "facets",        "cylindrical", "spherical",
+    "boxed",      "planar",       "average",      "tiling",        "pavement",    "square",
+    "triangular", "slope",        "aoi",          "image_pattern", "magnet",      "pigment_map",
+    "normal_map", "slope_map",    "material_map", "texture_map",   "tiles",       "uv_mapping",
+    "warp",       "gradient_map"};
+
+constexpr std::string_view kModifiers[] = {
+    "turbulence",    "octaves",     "omega",        "lambda",     "frequency", "phase",
+    "translate",     "rotate",      "scale",        "matrix",     "transform", "ramp_wave",
+    "triangle_wave", "sine_wave",   "scallop_wave", "cubic_wave", "poly_wave", "noise_generator",
+    "agate_turb",    "quick_color", "quick_colour"};
+
+}  // namespace
+
+Keywords pattern_words() { return kPatternNames; }
+Keywords pattern_modifier_words() { return kModifiers; }
+Keywords unsupported_pattern_words() { return kUnsupportedPatterns; }
+
+std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::PatternSpace& space) {
+  if (at_any_word(parser, kUnsupportedPatterns)) {
+    parser.fail_here("'" + parser.peek().text + "' is not supported yet by convray");
+  }
+  for (const PatternKeyword& keyword : kPatterns) {
+    if (!at_word(parser, keyword.word)) continue;
+    parser.next();
+    space.pattern = keyword.pattern;
+    if (keyword.pattern == scene::Pattern::gradient) {
+      space.gradient_axis = vector_param(parser, "the gradient's axis");
+      if (space.gradient_axis == Vec3(0.0)) {
+        parser.fail_here("the gradient's axis must not be <0, 0, 0>");
+      }
+    }
+    return keyword.pattern;
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+void parse_turbulence_setting(Parser& parser, const std::string& word,
+                              scene::Turbulence& turbulence) {
+  if (word == "turbulence") {
+    turbulence.amount = vector_param(parser, "turbulence");
+  } else if (word == "octaves") {
+    const SourceLoc loc = parser.peek().loc;
+    turbulence.octaves = int_param(parser, "octaves");
+    if (turbulence.octaves < 1 || turbulence.octaves > 10) {
+      // POV-Ray's limits for octaves.
+      parser.fail(loc, "octaves must lie in 1..10, found " + std::to_string(turbulence.octaves));
+    }
+  } else if (word == "omega") {
+    turbulence.omega = float_param(parser, "omega");
+  } else {
+    turbulence.lambda = float_param(parser, "lambda");
+  }
+}
+
+}  // namespace
+
+bool parse_pattern_modifier(Parser& parser, scene::PatternSpace& space) {
+  if (auto transform = parse_transform_modifier(parser)) {
+    space.transform = space.transform.then(*transform);
+    return true;
+  }
+  if (!at_any_word(parser, kModifiers)) return false;
+  const std::string word = parser.peek().text;
+  const SourceLoc loc = take_keyword(parser);
+  if (word == "turbulence" || word == "octaves" || word == "omega" || word == "lambda") {
+    parse_turbulence_setting(parser, word, space.turbulence);
+  } else if (word == "frequency") {
+    space.frequency = float_param(parser, "frequency");
+  } else if (word == "phase") {
+    space.phase = float_param(parser, "phase");
+  } else if (word == "ramp_wave") {
+    // The default wave: nothing to do.
+  } else if (word == "quick_color" || word == "quick_colour") {
+    color_param(parser);  // a preview colour: irrelevant to a full render
+  } else {
+    // Wave shapes, the noise generator and agate_turb: parsed, and the difference they
+    // make is not rendered.
+    if (word == "poly_wave" && at_float_start(parser)) float_param(parser, "poly_wave");
+    if (word == "noise_generator") int_param(parser, "noise_generator");
+    if (word == "agate_turb") float_param(parser, "agate_turb");
+    warn_once(parser, loc, "'" + word + "' is ignored by convray");
+  }
+  return true;
+}
+
+bool at_color_start(Parser& parser) {
+  static constexpr std::string_view kColorWords[] = {
+      "color",  "colour", "rgb",   "rgbf", "rgbt",   "rgbft",    "srgb", "srgbf", "srgbt",
+      "srgbft", "red",    "green", "blue", "filter", "transmit", "gray", "grey"};
+  if (at_any_word(parser, kColorWords)) return true;
+  const Token& token = parser.peek();
+  if (token.kind == Token::Kind::number) return true;
+  if (token.kind == Token::Kind::symbol) return token.text == "<" || token.text == "(";
+  if (const Value* declared = parser.peek_declared()) {
+    return declared->get<Vector>() || declared->get<double>();
+  }
+  return false;
+}
+
+}  // namespace convray::sdl::items

@@ -1,0 +1,256 @@
+// Object modifiers: transforms in POV-Ray's order and convention, textures that move with
+// the transforms given after them, CSG, `object { ID }` copies, clipped_by/bounded_by, flags.
+#include <glm/gtc/constants.hpp>
+
+#include "items_test_support.hpp"
+
+namespace convray::sdl {
+namespace {
+
+using namespace testing;
+
+TEST(ItemsObject, RotateNinetyAboutYTakesXToMinusZ) {
+  const auto object = only_object(parse("sphere { 0, 1 rotate 90*y }"));
+  expect_near(object->transform.point(Vec3(1, 0, 0)), Vec3(0, 0, -1));
+}
+
+TEST(ItemsObject, TransformsApplyInTheOrderWritten) {
+  const auto object = only_object(parse("sphere { 0, 1 scale 2 translate <1, 0, 0> }"));
+  expect_near(object->transform.point(Vec3(1, 0, 0)), Vec3(3, 0, 0));
+  const auto other = only_object(parse("sphere { 0, 1 translate <1, 0, 0> scale 2 }"));
+  expect_near(other->transform.point(Vec3(1, 0, 0)), Vec3(4, 0, 0));
+}
+
+TEST(ItemsObject, MatrixAndTransformBlock) {
+  // Row vectors: x -> <0, 1, 0>, y -> <-1, 0, 0>, z -> z, then the translation <1, 2, 3>.
+  const auto object = only_object(parse("sphere { 0, 1 matrix < 0,1,0, -1,0,0, 0,0,1, 1,2,3 > }"));
+  expect_near(object->transform.point(Vec3(1, 0, 0)), Vec3(1, 3, 3));
+  const auto declared =
+      only_object(parse("#declare T = transform { scale 2 translate x }\n"
+                        "sphere { 0, 1 transform T transform { T inverse } }"));
+  expect_near(declared->transform.point(Vec3(1, 2, 3)), Vec3(1, 2, 3));
+}
+
+TEST(ItemsObject, ScaleByZeroIsChangedToOneWithAWarning) {
+  const auto result = parse("sphere { 0, 1 scale <2, 0, 1> }");
+  expect_near(only_object(result)->transform.point(Vec3(1, 1, 1)), Vec3(2, 1, 1));
+  EXPECT_TRUE(has_warning(result, "scale by 0 along y changed to 1"));
+}
+
+TEST(ItemsObject, SingularMatrixFails) {
+  EXPECT_TRUE(fails_with("sphere { 0, 1 matrix <1,0,0, 1,0,0, 0,0,1, 0,0,0> }", 1, 15,
+                         "matrix is singular"));
+}
+
+TEST(ItemsObject, TextureGivenBeforeATransformMovesWithTheObject) {
+  const auto moved = only_object(parse("sphere { 0, 1 pigment { checker } translate <1,2,3> }"));
+  expect_near(moved->texture->pigment.space.transform.point(Vec3(0.0)), Vec3(1, 2, 3));
+  expect_near(moved->texture->normal.space.transform.point(Vec3(0.0)), Vec3(1, 2, 3));
+  const auto fixed = only_object(parse("sphere { 0, 1 translate <1,2,3> pigment { checker } }"));
+  EXPECT_TRUE(fixed->texture->pigment.space.transform.is_identity());
+}
+
+TEST(ItemsObject, CsgChildrenInOrderAndTheirTexturesMoveWithTheParent) {
+  const auto object = only_object(parse(R"(
+    difference {
+      box { -1, 1 pigment { checker } }
+      sphere { 0, 1.2 }
+      translate <0, 5, 0>
+    })"));
+  const auto& csg = shape_of<scene::Csg>(object);
+  EXPECT_EQ(csg.operation, scene::CsgOperation::difference);
+  ASSERT_EQ(csg.children.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<scene::Box>(csg.children[0]->shape));
+  EXPECT_TRUE(std::holds_alternative<scene::Sphere>(csg.children[1]->shape));
+  // The child stays in the parent's space; its texture (world space) moved with the parent.
+  EXPECT_TRUE(csg.children[0]->transform.is_identity());
+  expect_near(csg.children[0]->texture->pigment.space.transform.point(Vec3(0.0)), Vec3(0, 5, 0));
+  EXPECT_EQ(csg.children[1]->texture, nullptr);
+}
+
+TEST(ItemsObject, AllFourCsgOperations) {
+  const char* words[] = {"union", "intersection", "difference", "merge"};
+  const scene::CsgOperation operations[] = {
+      scene::CsgOperation::union_, scene::CsgOperation::intersection,
+      scene::CsgOperation::difference, scene::CsgOperation::merge};
+  for (int k = 0; k < 4; ++k) {
+    const auto object =
+        only_object(parse(std::string(words[k]) + " { sphere { 0, 1 } sphere { x, 1 } }"));
+    EXPECT_EQ(shape_of<scene::Csg>(object).operation, operations[k]) << words[k];
+  }
+}
+
+TEST(ItemsObject, MisspelledChildInCsg) {
+  EXPECT_TRUE(fails_with("union { sphere { 0, 1 } sphre { x, 1 } }", 1, 25,
+                         "unexpected 'sphre' in union (did you mean 'sphere'?)"));
+}
+
+TEST(ItemsObject, CsgChildrenAfterModifiersFail) {
+  EXPECT_TRUE(fails_with("union { sphere { 0, 1 } pigment { rgb 1 } sphere { x, 1 } }", 1, 43,
+                         "the union's objects must come before the object's modifiers "
+                         "(first: 'pigment' at test.pov:1:25)"));
+}
+
+TEST(ItemsObject, DeclaredObjectIsSharedOrCopied) {
+  const auto result = parse(R"(
+    #declare Ball = sphere { 0, 1 pigment { checker } }
+    object { Ball }
+    object { Ball translate x })");
+  ASSERT_EQ(result.scene.objects.size(), 2u);
+  const scene::ObjectPtr& declared = *result.globals.at("Ball").get<scene::ObjectPtr>();
+  EXPECT_EQ(result.scene.objects[0], declared);  // no modifiers: the same record
+  const auto& copy = result.scene.objects[1];
+  EXPECT_NE(copy, declared);
+  EXPECT_TRUE(declared->transform.is_identity());
+  expect_near(copy->transform.point(Vec3(0.0)), Vec3(1, 0, 0));
+  expect_near(copy->texture->pigment.space.transform.point(Vec3(0.0)), Vec3(1, 0, 0));
+  EXPECT_EQ(copy->loc.line, 4);
+}
+
+TEST(ItemsObject, ObjectOfALightSourceAddsTheLightAtTheTopLevel) {
+  const auto result = parse("#declare L = light_source { 0, 1 }\nobject { L translate y }");
+  ASSERT_EQ(result.scene.lights.size(), 1u);
+  expect_near(result.scene.lights[0].position, Vec3(0, 1, 0));
+  EXPECT_TRUE(result.scene.objects.empty());
+  EXPECT_TRUE(fails_with("#declare L = light_source { 0, 1 }\nunion { object { L } }", 2, 18,
+                         "'L' is a light_source"));
+}
+
+TEST(ItemsObject, InteriorTextureIsParsedAndIgnored) {
+  const auto result = parse("box { -1, 1 interior_texture { pigment { rgb 0 } } }");
+  // interior_texture is not the texture: the object has the default one (black pigment).
+  EXPECT_EQ(only_object(result)->texture->pigment.color.rgb, Vec3(0.0));
+  EXPECT_TRUE(has_warning(result, "interior_texture is ignored"));
+}
+
+TEST(ItemsObject, DefaultWithoutHashSetsTheDefaults) {
+  const auto result =
+      parse("default { finish { ambient 0.5 } }\nsphere { 0, 1 pigment { rgb 1 } }");
+  expect_near(only_object(result)->texture->finish.ambient, Vec3(0.5));
+}
+
+TEST(ItemsObject, PigmentOnAnObjectModifiesItsTextureFromTheDefaults) {
+  const auto result = parse(R"(
+    #default { finish { ambient 0.3 } }
+    sphere { 0, 1 pigment { rgb <1, 0, 0> } finish { phong 1 } })");
+  const auto& texture = *only_object(result)->texture;
+  expect_near(texture.pigment.color.rgb, Vec3(1, 0, 0));
+  expect_near(texture.finish.ambient, Vec3(0.3));
+  EXPECT_EQ(texture.finish.phong, 1.0);
+}
+
+TEST(ItemsObject, SecondTextureReplacesTheFirstWithAWarning) {
+  const auto result =
+      parse("sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgb x } } }");
+  expect_near(only_object(result)->texture->pigment.color.rgb, Vec3(1, 0, 0));
+  EXPECT_TRUE(has_warning(result, "layered textures are not supported"));
+}
+
+TEST(ItemsObject, TransparentOverlayKeepsTheOpaqueBaseLayer) {
+  // POV-Ray would show the base through the overlay's transparent parts; the base is the
+  // closer likeness of the two.
+  const auto result = parse(
+      "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <1, 0, 0, 0.7> } } }");
+  expect_near(only_object(result)->texture->pigment.color.rgb, Vec3(1.0));
+}
+
+TEST(ItemsObject, LayeredTextureDeclarationKeepsItsFirstLayer) {
+  const auto result = parse(R"(
+    #declare Layered = texture { pigment { rgb <0, 1, 0> } }
+                       texture { pigment { bozo color_map { [0 rgbt <1, 0, 0, 1>] [1 rgb 0] } } }
+    #declare Next = texture { Layered }
+    sphere { 0, 1 texture { Next } })");
+  expect_near(only_object(result)->texture->pigment.color.rgb, Vec3(0, 1, 0));
+  EXPECT_TRUE(has_warning(result, "layered textures are not supported"));
+}
+
+TEST(ItemsObject, DeclarationsFollowingEachOtherWithoutSemicolons) {
+  const auto result = parse(R"(
+    #declare Clay = texture { pigment { rgb <1, 0.5, 0> } }
+    #declare Ball = sphere { 0, 1 texture { Clay } }
+    object { Ball })");
+  expect_near(only_object(result)->texture->pigment.color.rgb, Vec3(1, 0.5, 0));
+}
+
+TEST(ItemsObject, DeclaredMaterialKeepsItsTexture) {
+  const auto result = parse(R"(
+    #declare M = material { texture { pigment { rgb <0, 0, 1> } } interior { ior 1.5 } }
+    sphere { 0, 1 material { M } })");
+  expect_near(only_object(result)->texture->pigment.color.rgb, Vec3(0, 0, 1));
+  EXPECT_TRUE(has_warning(result, "its interior is dropped"));
+}
+
+TEST(ItemsObject, UnsupportedObjectsFailButMayBeDeclared) {
+  EXPECT_TRUE(fails_with("union { sphere { 0, 1 } lathe { } }", 1, 25,
+                         "'lathe' objects are not supported yet"));
+  EXPECT_TRUE(fails_with("text { ttf \"a.ttf\" \"A\" 1, 0 }", 1, 1,
+                         "'text' objects are not supported yet"));
+  // shapes.inc declares quadrics that most scenes never use: declaring one warns.
+  const auto result = parse("#declare Q = quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }");
+  EXPECT_TRUE(has_warning(result, "'quadric' objects are not supported yet"));
+}
+
+TEST(ItemsObject, FlagsAndInterior) {
+  const auto object = only_object(
+      parse("sphere { 0, 1 inverse no_shadow hollow interior { ior 1.5 } double_illuminate }"));
+  EXPECT_TRUE(object->inverse);
+  EXPECT_TRUE(object->no_shadow);
+  EXPECT_TRUE(object->hollow);
+  ASSERT_TRUE(object->interior.has_value());
+  EXPECT_EQ(object->interior->ior, 1.5);
+  EXPECT_FALSE(only_object(parse("sphere { 0, 1 hollow off }"))->hollow);
+  EXPECT_TRUE(has_warning(parse("sphere { 0, 1 no_image }"), "'no_image' is ignored"));
+}
+
+TEST(ItemsObject, MaterialSetsTextureAndInterior) {
+  const auto object = only_object(
+      parse("sphere { 0, 1 material { texture { pigment { rgb y } } interior { ior 1.33 } } }"));
+  expect_near(object->texture->pigment.color.rgb, Vec3(0, 1, 0));
+  EXPECT_EQ(object->interior->ior, 1.33);
+}
+
+TEST(ItemsObject, ClippedByIsStoredInTheObjectsOwnSpace) {
+  const auto object =
+      only_object(parse("sphere { 0, 1 translate <0, 2, 0> clipped_by { plane { y, 0 } } "
+                        "bounded_by { box { -3, 3 } } }"));
+  ASSERT_EQ(object->clipped_by.size(), 1u);
+  // The plane was written in the space the sphere had been moved to; composed with the
+  // object's transform it must land back where it was written.
+  const scene::Transform world = object->clipped_by[0]->transform.then(object->transform);
+  expect_near(world.point(Vec3(0.0)), Vec3(0.0));
+  ASSERT_NE(object->bounded_by, nullptr);
+  EXPECT_TRUE(std::holds_alternative<scene::Box>(object->bounded_by->shape));
+}
+
+TEST(ItemsObject, ClippedByBoundedByAndTheReverse) {
+  const auto object =
+      only_object(parse("sphere { 0, 1 bounded_by { box { -1, 1 } } clipped_by { bounded_by } }"));
+  ASSERT_EQ(object->clipped_by.size(), 1u);
+  EXPECT_EQ(object->clipped_by[0], object->bounded_by);
+  const auto other =
+      only_object(parse("sphere { 0, 1 clipped_by { box { -1, 1 } } bounded_by { clipped_by } }"));
+  EXPECT_EQ(other->bounded_by, other->clipped_by[0]);
+}
+
+TEST(ItemsObject, LightInsideCsgIsReportedAsNotSupported) {
+  EXPECT_TRUE(fails_with("union { light_source { 0, 1 } sphere { 0, 1 } }", 1, 9,
+                         "light_source inside union is not supported yet"));
+}
+
+TEST(ItemsObject, ArrayElementsNameItems) {
+  const auto result = parse(R"(
+    #declare Things = array[2] { sphere { 0, 1 }, box { -1, 1 } }
+    #declare Textures = array[2] { texture { pigment { rgb x } }, texture { pigment { rgb y } } }
+    #declare Colors = array[2] { rgb <0, 0, 1>, rgb <1, 1, 0> }
+    object { Things[1] texture { Textures[1] } }
+    sphere { 0, 1 pigment { Colors[0] } })");
+  ASSERT_EQ(result.scene.objects.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<scene::Box>(result.scene.objects[0]->shape));
+  expect_near(result.scene.objects[0]->texture->pigment.color.rgb, Vec3(0, 1, 0));
+  expect_near(result.scene.objects[1]->texture->pigment.color.rgb, Vec3(0, 0, 1));
+  EXPECT_TRUE(fails_with("#declare A = array[1] { 1 }\nsphere { 0, 1 texture { A[0] } }", 2, 25,
+                         "expected a texture, found a float"));
+}
+
+}  // namespace
+}  // namespace convray::sdl

@@ -1,0 +1,247 @@
+// Textures: pigments (colours, patterns, colour maps), finishes, normals, interiors, declared
+// items and the #default texture every new texture starts from.
+#include "items_test_support.hpp"
+
+namespace convray::sdl {
+namespace {
+
+using namespace testing;
+
+scene::Texture texture_of(const ParseResult& result) { return *only_object(result)->texture; }
+
+TEST(ItemsTexture, FullTexture) {
+  const auto result = parse(R"(
+    sphere { 0, 1 texture {
+      pigment { rgb <1, 0.5, 0> }
+      finish { ambient 0.2 diffuse 0.7 brilliance 2 phong 1 phong_size 60 specular 0.3
+               roughness 0.01 reflection 0.25 metallic emission rgb <0, 0, 0.5> }
+      normal { bumps 0.3 scale 0.1 }
+    } })");
+  const scene::Texture& texture = texture_of(result);
+  EXPECT_EQ(texture.pigment.space.pattern, scene::Pattern::solid);
+  expect_near(texture.pigment.color.rgb, Vec3(1, 0.5, 0));
+  const scene::Finish& finish = texture.finish;
+  expect_near(finish.ambient, Vec3(0.2));
+  EXPECT_EQ(finish.diffuse, 0.7);
+  EXPECT_EQ(finish.brilliance, 2.0);
+  EXPECT_EQ(finish.phong, 1.0);
+  EXPECT_EQ(finish.phong_size, 60.0);
+  EXPECT_EQ(finish.specular, 0.3);
+  EXPECT_EQ(finish.roughness, 0.01);
+  expect_near(finish.reflection, Vec3(0.25));
+  EXPECT_EQ(finish.metallic, 1.0);  // `metallic` alone means 1
+  expect_near(finish.emission, Vec3(0, 0, 0.5));
+  EXPECT_EQ(texture.normal.space.pattern, scene::Pattern::bumps);
+  EXPECT_EQ(texture.normal.amount, 0.3);
+  expect_near(texture.normal.space.transform.point(Vec3(1, 1, 1)), Vec3(0.1));
+}
+
+TEST(ItemsTexture, UnsetFinishValuesArePovRayDefaults) {
+  const scene::Finish& finish = texture_of(parse("sphere { 0, 1 finish { phong 1 } }")).finish;
+  expect_near(finish.ambient, Vec3(0.1));
+  EXPECT_EQ(finish.diffuse, 0.6);
+  EXPECT_EQ(finish.phong_size, 40.0);
+}
+
+TEST(ItemsTexture, DeclaredTextureIsTheStartingPoint) {
+  const auto result = parse(R"(
+    #declare T = texture { pigment { rgb <0, 1, 0> } finish { phong 1 } }
+    sphere { 0, 1 texture { T finish { diffuse 0.3 } } })");
+  const scene::Texture& texture = texture_of(result);
+  expect_near(texture.pigment.color.rgb, Vec3(0, 1, 0));
+  EXPECT_EQ(texture.finish.phong, 1.0);  // kept: finish { } modifies T's finish
+  EXPECT_EQ(texture.finish.diffuse, 0.3);
+}
+
+TEST(ItemsTexture, DeclaredPigmentFinishNormal) {
+  const auto result = parse(R"(
+    #declare P = pigment { checker rgb 1, rgb 0 }
+    #declare F = finish { ambient 0 }
+    #declare N = normal { dents 0.8 }
+    sphere { 0, 1 pigment { P scale 2 } finish { F } normal { N } })");
+  const scene::Texture& texture = texture_of(result);
+  EXPECT_EQ(texture.pigment.space.pattern, scene::Pattern::checker);
+  expect_near(texture.pigment.space.transform.point(Vec3(1, 0, 0)), Vec3(2, 0, 0));
+  expect_near(texture.finish.ambient, Vec3(0.0));
+  EXPECT_EQ(texture.normal.space.pattern, scene::Pattern::dents);
+  EXPECT_EQ(texture.normal.amount, 0.8);
+}
+
+TEST(ItemsTexture, CheckerColorsAndPovRayDefaults) {
+  const auto& listed = texture_of(parse("plane { y, 0 pigment { checker rgb 1, rgb <1,0,0> } }"));
+  ASSERT_EQ(listed.pigment.block_colors.size(), 2u);
+  expect_near(listed.pigment.block_colors[0].rgb, Vec3(1.0));
+  expect_near(listed.pigment.block_colors[1].rgb, Vec3(1, 0, 0));
+  // POV-Ray 3.7 renders `checker` alone in blue and green (checked with povray).
+  const auto& unlisted = texture_of(parse("plane { y, 0 pigment { checker } }"));
+  ASSERT_EQ(unlisted.pigment.block_colors.size(), 2u);
+  expect_near(unlisted.pigment.block_colors[0].rgb, Vec3(0, 0, 1));
+  expect_near(unlisted.pigment.block_colors[1].rgb, Vec3(0, 1, 0));
+}
+
+TEST(ItemsTexture, GradientWithColorMapAndPatternModifiers) {
+  const auto& pigment = texture_of(parse(R"(
+    plane { y, 0 pigment {
+      gradient <0, 1, 0>
+      color_map { [0 color rgb 0] [0.5, rgb <1, 0, 0>] [1 rgbf <1, 1, 1, 0.5>] }
+      turbulence 0.5 octaves 3 omega 0.7 lambda 3 frequency 2 phase 0.25
+      rotate 90*x
+    } })"))
+                            .pigment;
+  EXPECT_EQ(pigment.space.pattern, scene::Pattern::gradient);
+  expect_near(pigment.space.gradient_axis, Vec3(0, 1, 0));
+  ASSERT_EQ(pigment.color_map.size(), 3u);
+  EXPECT_EQ(pigment.color_map[1].value, 0.5);
+  expect_near(pigment.color_map[1].color.rgb, Vec3(1, 0, 0));
+  EXPECT_EQ(pigment.color_map[2].color.filter, 0.5);
+  expect_near(pigment.space.turbulence.amount, Vec3(0.5));
+  EXPECT_EQ(pigment.space.turbulence.octaves, 3);
+  EXPECT_EQ(pigment.space.turbulence.omega, 0.7);
+  EXPECT_EQ(pigment.space.turbulence.lambda, 3.0);
+  EXPECT_EQ(pigment.space.frequency, 2.0);
+  EXPECT_EQ(pigment.space.phase, 0.25);
+  expect_near(pigment.space.transform.point(Vec3(0, 1, 0)), Vec3(0, 0, 1));
+}
+
+TEST(ItemsTexture, OldTwoValueColorMapEntriesAndDeclaredMaps) {
+  const auto& old_form = texture_of(
+      parse("plane { y, 0 pigment { marble colour_map { [0.0, 0.5 color rgb 0 color rgb 1] } } }"));
+  ASSERT_EQ(old_form.pigment.color_map.size(), 2u);
+  EXPECT_EQ(old_form.pigment.color_map[1].value, 0.5);
+  expect_near(old_form.pigment.color_map[1].color.rgb, Vec3(1.0));
+  const auto declared = parse(R"(
+    #declare M = color_map { [0 rgb 0] [1 rgb 1] }
+    plane { y, 0 pigment { wood color_map { M } turbulence <0.1, 0.2, 0.3> } })");
+  const auto& pigment = texture_of(declared).pigment;
+  EXPECT_EQ(pigment.space.pattern, scene::Pattern::wood);
+  EXPECT_EQ(pigment.color_map.size(), 2u);
+  expect_near(pigment.space.turbulence.amount, Vec3(0.1, 0.2, 0.3));
+}
+
+// POV-Ray scans a map for the first entry at or above v and blends it with the entry
+// before, in the order written. The ascending map stored must give the same colours.
+TEST(ItemsTexture, ColorMapThatStepsBackKeepsPovRaysColors) {
+  // woods.inc's T_Wood32 ends [0.85 A] [0.95 B] [0.90 C] [1.00 D]: for v in (0.95, 1] POV-Ray
+  // blends C (at 0.90) and D (at 1.00); C alone is never the entry the scan stops at.
+  const auto map = texture_of(parse(R"(
+    plane { y, 0 pigment { wood color_map {
+      [0.85 rgb <1, 0, 0>] [0.95 rgb <0, 1, 0>] [0.90 rgb <0, 0, 1>] [1.00 rgb <1, 1, 1>] } } })"))
+                       .pigment.color_map;
+  ASSERT_EQ(map.size(), 4u);
+  EXPECT_EQ(map[1].value, 0.95);
+  expect_near(map[1].color.rgb, Vec3(0, 1, 0));
+  // The blend of C and D taken at 0.95: halfway from <0, 0, 1> to <1, 1, 1>.
+  EXPECT_EQ(map[2].value, 0.95);
+  expect_near(map[2].color.rgb, Vec3(0.5, 0.5, 1), 1e-12);
+  EXPECT_EQ(map[3].value, 1.0);
+}
+
+TEST(ItemsTexture, ColorMapWhoseLastEntryStepsBackHoldsItAbove) {
+  // [0 A] [1 B] [0.5 C]: at or above 0.5 POV-Ray gives C; below, the blend of A and B.
+  const auto map = texture_of(parse("plane { y, 0 pigment { bozo color_map { [0 rgb 0] [1 rgb 1] "
+                                    "[0.5 rgb <1, 0, 0>] } } }"))
+                       .pigment.color_map;
+  ASSERT_EQ(map.size(), 3u);
+  EXPECT_EQ(map[1].value, 0.5);
+  expect_near(map[1].color.rgb, Vec3(0.5), 1e-12);
+  EXPECT_EQ(map[2].value, 0.5);
+  expect_near(map[2].color.rgb, Vec3(1, 0, 0));
+}
+
+TEST(ItemsTexture, EveryPatternKeyword) {
+  const char* words[] = {"marble", "wood",    "granite", "agate", "bozo",     "spotted", "radial",
+                         "onion",  "leopard", "ripples", "waves", "wrinkles", "bumps",   "dents"};
+  for (const char* word : words) {
+    const auto result = parse(std::string("plane { y, 0 pigment { ") + word + " } }");
+    EXPECT_NE(texture_of(result).pigment.space.pattern, scene::Pattern::solid) << word;
+  }
+}
+
+TEST(ItemsTexture, NormalDefaultAmountIsPovRays) {
+  // POV-Ray 3.7 renders `bumps` and `bumps 0.5` identically (checked with povray).
+  const auto& normal = texture_of(parse("sphere { 0, 1 normal { wrinkles } }")).normal;
+  EXPECT_EQ(normal.space.pattern, scene::Pattern::wrinkles);
+  EXPECT_EQ(normal.amount, 0.5);
+  EXPECT_EQ(texture_of(parse("sphere { 0, 1 normal { ripples bump_size 2 } }")).normal.amount, 2.0);
+}
+
+TEST(ItemsTexture, ReflectionBlockKeepsTheMaximum) {
+  const auto result = parse(
+      "sphere { 0, 1 finish { reflection { 0.1, rgb <0.6, 0.5, 0.4> fresnel on metallic } } }");
+  const scene::Finish& finish = texture_of(result).finish;
+  expect_near(finish.reflection, Vec3(0.6, 0.5, 0.4));
+  EXPECT_EQ(finish.metallic, 1.0);
+  EXPECT_TRUE(has_warning(result, "fresnel reflection is not rendered"));
+}
+
+TEST(ItemsTexture, InteriorAndIgnoredFade) {
+  const auto result = parse("sphere { 0, 1 interior { ior 1.5 fade_distance 2 fade_power 1 } }");
+  EXPECT_EQ(only_object(result)->interior->ior, 1.5);
+  EXPECT_TRUE(has_warning(result, "'fade_distance' is ignored"));
+}
+
+TEST(ItemsTexture, DefaultDirectiveFeedsNewTextures) {
+  const auto result = parse(R"(
+    #default { texture { pigment { rgb <0.5, 0.5, 0.5> } finish { ambient 0 } } }
+    sphere { 0, 1 texture { finish { phong 1 } } })");
+  const scene::Texture& texture = texture_of(result);
+  expect_near(texture.pigment.color.rgb, Vec3(0.5));
+  expect_near(texture.finish.ambient, Vec3(0.0));
+  EXPECT_EQ(texture.finish.phong, 1.0);
+}
+
+TEST(ItemsTexture, TextureTransformsMovePigmentAndNormal) {
+  const auto& texture = texture_of(
+      parse("sphere { 0, 1 texture { pigment { checker } normal { bumps } translate x } }"));
+  expect_near(texture.pigment.space.transform.point(Vec3(0.0)), Vec3(1, 0, 0));
+  expect_near(texture.normal.space.transform.point(Vec3(0.0)), Vec3(1, 0, 0));
+}
+
+TEST(ItemsTexture, Errors) {
+  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { chcker } }", 1, 25,
+                         "unexpected 'chcker' in pigment (did you mean 'checker'?)"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { brick } }", 1, 25, "not supported yet"));
+  EXPECT_TRUE(
+      fails_with("sphere { 0, 1 finish { phong_sise 3 } }", 1, 24, "did you mean 'phong_size'?"));
+  EXPECT_TRUE(
+      fails_with("sphere { 0, 1 pigment { bozo octaves 0 } }", 1, 38, "octaves must lie in 1..10"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { bozo color_map { 0 } } }", 1, 42,
+                         "expected '[' to start a color_map entry"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 interior { ior -1 } }", 1, 26, "ior must be positive"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { pigment { rgb 1 } tiles } }", 1, 43,
+                         "not supported yet"));
+}
+
+}  // namespace
+}  // namespace convray::sdl
+
+namespace convray::sdl {
+namespace {
+
+// POV-Ray: a top-level object without a texture takes the #default texture in force where it
+// ends; objects before the #default keep the built-in one (black); CSG children without a
+// texture are left to inherit their parent's.
+TEST(ItemsTexture, DefaultTextureReachesUntexturedObjects) {
+  const ParseResult result = testing::parse(R"(
+    plane { y, 0 }
+    #default { texture { pigment { rgb 0.8 } finish { phong 0.5 } } }
+    plane { y, 1 }
+    union { sphere { 0, 1 } sphere { x, 1 } }
+    sphere { 0, 1 pigment { rgb <1, 0, 0> } })");
+  ASSERT_EQ(result.scene.objects.size(), 4u);
+  const auto& objects = result.scene.objects;
+  ASSERT_TRUE(objects[0]->texture);
+  EXPECT_EQ(objects[0]->texture->pigment.color.rgb, Vec3(0.0));
+  ASSERT_TRUE(objects[1]->texture);
+  EXPECT_EQ(objects[1]->texture->pigment.color.rgb, Vec3(0.8));
+  EXPECT_EQ(objects[1]->texture->finish.phong, 0.5);
+  ASSERT_TRUE(objects[2]->texture);
+  EXPECT_EQ(objects[2]->texture->pigment.color.rgb, Vec3(0.8));
+  const auto& children = std::get<scene::Csg>(objects[2]->shape).children;
+  EXPECT_FALSE(children[0]->texture);  // inherits the union's
+  EXPECT_EQ(objects[3]->texture->pigment.color.rgb, Vec3(1, 0, 0));
+  EXPECT_EQ(objects[3]->texture->finish.phong, 0.5);  // started from the #default
+}
+
+}  // namespace
+}  // namespace convray::sdl
