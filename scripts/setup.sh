@@ -43,7 +43,9 @@ if [ "$mode" = test ]; then
   exit 0
 fi
 
-echo "==> default job: report the example soup, sample its field, picture a slice, render it"
+echo "==> default job: render the default scene; report the example soup, sample its field, slice it"
+mkdir -p out
+./build/convray scenes/soup.pov -o out/soup.png
 mesh=scenes/models/soup.obj
 ./build/convray info "$mesh"
 echo "field at three points on and near the shell (F dF/dx dF/dy dF/dz), radius 0.25:"
@@ -52,4 +54,4 @@ mkdir -p out
 ./build/convray slice "$mesh" --radius 0.25 --offset 0.1 --axis z --at 0 --size 800x600 \
   -o out/slice.png
 ./build/convray quick "$mesh" --radius 0.25 --offset 0.1 --size 800x600 -o out/quick.png
-echo "==> wrote out/slice.png and out/quick.png"
+echo "==> wrote out/soup.png (the default scene, scenes/soup.pov), out/slice.png and out/quick.png"
