@@ -26,22 +26,4 @@ Box3 transform_box(const scene::Transform& transform, const Box3& box) {
   return out;
 }
 
-bool clip_to_box(const implicit::Ray& ray, const Box3& box, double& tmin, double& tmax) {
-  if (is_empty(box)) return false;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double o = ray.origin[axis], d = ray.direction[axis];
-    if (d == 0.0) {
-      // Parallel to this slab: inside it everywhere or nowhere (avoids 0 * inf).
-      if (o < box.lo[axis] || o > box.hi[axis]) return false;
-      continue;
-    }
-    double t0 = (box.lo[axis] - o) / d, t1 = (box.hi[axis] - o) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    tmin = std::max(tmin, t0);
-    tmax = std::min(tmax, t1);
-    if (tmin > tmax) return false;
-  }
-  return true;
-}
-
 }  // namespace convray::geometry

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "implicit/ray.hpp"
+#include "implicit/ray_box.hpp"
 #include "scene/transform.hpp"
 #include "util/math.hpp"
 
@@ -48,6 +49,6 @@ Box3 transform_box(const scene::Transform& transform, const Box3& box);
 
 // Narrows [tmin, tmax] to where ray.at(t) lies in `box`; false when nothing is left. Works
 // for any direction length and for infinite boxes.
-bool clip_to_box(const implicit::Ray& ray, const Box3& box, double& tmin, double& tmax);
+using implicit::clip_to_box;
 
 }  // namespace convray::geometry

@@ -7,6 +7,7 @@
 #include "field/triangle_batch.hpp"
 #include "implicit/bezier_clip.hpp"
 #include "implicit/interval_fit.hpp"
+#include "implicit/ray_box.hpp"
 #include "implicit/sphere_sweep.hpp"
 #include "implicit/surface_impl.hpp"
 
@@ -349,23 +350,6 @@ bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepReque
     begin = end;
   }
   return false;
-}
-
-// Narrows [tmin, tmax] to the box (the slab test); false when the ray misses it.
-bool clip_to_box(const Ray& ray, const Box3& box, double& tmin, double& tmax) {
-  if (box.empty()) return false;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double o = ray.origin[axis], d = ray.direction[axis];
-    if (d == 0.0) {
-      if (o < box.lo[axis] || o > box.hi[axis]) return false;
-      continue;
-    }
-    double t0 = (box.lo[axis] - o) / d, t1 = (box.hi[axis] - o) / d;
-    if (t0 > t1) std::swap(t0, t1);
-    tmin = std::max(tmin, t0);
-    tmax = std::min(tmax, t1);
-  }
-  return tmin <= tmax;
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "render/progress.hpp"
-#include "render/ray_box.hpp"
+#include "implicit/ray_box.hpp"
 
 namespace convray::render {
 
@@ -42,7 +42,7 @@ Vec3 render_pixel(const Traceable& scene, const Box3& scene_bounds, const Camera
   const Ray ray = camera.primary_ray(i, j);
   ++stats.camera_rays;
   double tmin = 0.0, tmax = std::numeric_limits<double>::infinity();
-  if (!clip_to_box(ray, scene_bounds, tmin, tmax)) return lighting.background;
+  if (!implicit::clip_to_box(ray, scene_bounds, tmin, tmax)) return lighting.background;
   ++stats.queries;
   const std::optional<SurfaceHit> hit = scene.first_hit(ray, tmin, tmax, stats.trace);
   if (!hit) return lighting.background;

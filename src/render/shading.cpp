@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/ray_box.hpp"
+#include "implicit/ray_box.hpp"
 
 namespace convray::render {
 
@@ -36,7 +36,7 @@ Vec3 shade(const Traceable& scene, const Box3& scene_bounds, const Ray& ray, con
     // crossing it starts from.
     const Ray shadow{hit.point + lighting.shadow_bias * normal, to_light};
     double tmin = 0.0, tmax = light_distance - lighting.shadow_bias;
-    if (clip_to_box(shadow, scene_bounds, tmin, tmax)) {
+    if (implicit::clip_to_box(shadow, scene_bounds, tmin, tmax)) {
       ++stats.queries;
       if (scene.occluded(shadow, tmin, tmax, stats.trace)) visible = 0.0;
     }
