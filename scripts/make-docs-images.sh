@@ -31,7 +31,7 @@ $convray quick "$dragon" --fit-box 400 --radius 2 --offset 1 --size 800x600 \
 # Every scene of scenes/, anti-aliased as POV-Ray's +A0.3 (docs/scenes.md).
 mkdir -p $out/scenes
 for scene in scenes/*.pov; do
-  $convray "$scene" +W480 +H360 +A0.3 --quiet -o "$out/scenes/$(basename "$scene" .pov).png"
+  $convray "$scene" +W400 +H300 +A0.3 --quiet -o "$out/scenes/$(basename "$scene" .pov).png"
 done
 # POV-Ray's blob samples next to POV-Ray's own pictures (docs/povray-comparison.md).
 if command -v povray >/dev/null && [ -d /usr/share/povray-3.7/scenes/objects ]; then
