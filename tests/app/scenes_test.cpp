@@ -3,6 +3,7 @@
 // scripts/make-docs-images.sh.) Also the render command's errors, end to end.
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,50 @@ TEST_F(Scenes, MissingSceneIsNamed) {
   const testing::CliRun run = run_convray("'" + file("nowhere.pov") + "' -o '" + file("x.png") + "'");
   EXPECT_EQ(run.exit_code, 2) << run.all();
   EXPECT_NE(run.err.find("nowhere.pov"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace convray
+
+namespace convray {
+namespace {
+
+// `convray field SCENE --object NAME`: a declared point component of radius 1, strength 2,
+// placed at x = 1 by the object's transform, has the field 2 (1 - d^2)^2 with d the distance
+// to (1, 0, 0), and the gradient -8 (1 - d^2) (p - c).
+TEST_F(Scenes, FieldOfADeclaredObjectIsItsPlacedRawField) {
+  std::ofstream(file("ball.pov")) << "#declare Ball = convolution {\n"
+                                     "  point { <0, 0, 0> radius 1 strength 2 }\n"
+                                     "  threshold 0.5\n"
+                                     "  translate x\n"
+                                     "}\n"
+                                     "#declare Size = 3;\n";
+  const testing::CliRun run =
+      run_convray("field '" + file("ball.pov") + "' --object Ball", "1 0 0\n1.5 0 0\n1 0.6 0\n5 0 0\n");
+  ASSERT_EQ(run.exit_code, 0) << run.all();
+  std::istringstream lines(run.out);
+  const double expected[4][4] = {{2.0, 0, 0, 0},
+                                 {2 * 0.75 * 0.75, -8 * 0.75 * 0.5, 0, 0},
+                                 {2 * 0.64 * 0.64, 0, -8 * 0.64 * 0.6, 0},
+                                 {0, 0, 0, 0}};
+  for (const auto& row : expected) {
+    double f, gx, gy, gz;
+    ASSERT_TRUE(lines >> f >> gx >> gy >> gz) << run.out;
+    EXPECT_NEAR(f, row[0], 1e-12);
+    EXPECT_NEAR(gx, row[1], 1e-12);
+    EXPECT_NEAR(gy, row[2], 1e-12);
+    EXPECT_NEAR(gz, row[3], 1e-12);
+  }
+  const testing::CliRun missing = run_convray("field '" + file("ball.pov") + "' --object Balll", "");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("no identifier 'Balll' is declared"), std::string::npos) << missing.err;
+  const testing::CliRun wrong = run_convray("field '" + file("ball.pov") + "' --object Size", "");
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_NE(wrong.err.find("'Size' is a float, not a convolution object or blob"), std::string::npos)
+      << wrong.err;
+  const testing::CliRun no_object = run_convray("field '" + file("ball.pov") + "'", "");
+  EXPECT_EQ(no_object.exit_code, 2);
+  EXPECT_NE(no_object.err.find("--object NAME"), std::string::npos) << no_object.err;
 }
 
 }  // namespace
