@@ -339,6 +339,8 @@ Value Parser::Impl::parse_keyword() {
     default:
       break;
   }
+  // Colour keywords and component modifiers (colors.cpp knows which they are).
+  if (is_color_keyword(t)) return parse_color_group();
   switch (t.word) {
     case Word::pi:
       return constant(make_value(kPi));
@@ -388,24 +390,6 @@ Value Parser::Impl::parse_keyword() {
       return constant(make_value(language_version));
     case Word::input_file_name:
       return constant(make_value(files.front()->name));
-    case Word::color:
-    case Word::colour:
-    case Word::rgb:
-    case Word::rgbf:
-    case Word::rgbt:
-    case Word::rgbft:
-    case Word::srgb:
-    case Word::srgbf:
-    case Word::srgbt:
-    case Word::srgbft:
-    case Word::red:
-    case Word::green:
-    case Word::blue:
-    case Word::filter:
-    case Word::transmit:
-    case Word::gray:
-    case Word::grey:
-      return parse_color_group();
     case Word::internal:
       fail(at, "internal functions (functions.inc) are not supported");
     case Word::array:
