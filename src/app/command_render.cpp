@@ -2,12 +2,19 @@
 
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <limits>
 #include <memory>
 #include <new>
-#include <stdexcept>
 #include <ostream>
+#include <sstream>
+#include <stdexcept>
 
+#include "app/frame_names.hpp"
+#include "app/video.hpp"
 #include "geometry/world.hpp"
 #include "render/image_file.hpp"
 #include "render/progress.hpp"
@@ -25,11 +32,23 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-sdl::ParseOptions parse_options(const RenderOptions& o) {
+int clamp_to_int(long long v) {
+  return int(
+      std::clamp<long long>(v, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+}
+
+sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame) {
   sdl::ParseOptions p;
   p.image_width = o.width;
   p.image_height = o.height;
-  p.clock = o.clock;
+  p.clock = frame.clock;
+  p.clock_delta = frame.clock_delta;
+  p.clock_on = frame.clock_on;
+  p.frame_number = clamp_to_int(frame.frame_number);
+  p.initial_frame = clamp_to_int(frame.initial_frame);
+  p.final_frame = clamp_to_int(frame.final_frame);
+  p.initial_clock = frame.initial_clock;
+  p.final_clock = frame.final_clock;
   p.library_paths = o.library_paths;
   p.declares = o.declares;
   return p;
@@ -64,52 +83,130 @@ void print_stats(const render::RenderStats& s, const PhaseTimes& t, std::ostream
       << "time total: " << t.total() << " s\n";
 }
 
-void render_scene_file(const RenderOptions& o, std::ostream& out, std::ostream& err) {
-  // Everything that can be checked before the work starts is checked first.
+// One animation's frames rendered in order; everything a frame needs that does not change
+// from frame to frame lives here.
+class FrameRenderer {
+ public:
+  FrameRenderer(const RenderOptions& options, const FramePlan& plan, std::ostream& out,
+                std::ostream& err)
+      : o_(options), plan_(plan), out_(out), err_(err) {}
+
+  // Parses the frame's scene, builds it, renders it and writes `file`.
+  void render(const FrameClock& frame, size_t position, const std::string& file) {
+    PhaseTimes times;
+    Clock::time_point start = Clock::now();
+    const sdl::ParseResult parsed = sdl::parse_file(o_.scene, parse_options(o_, frame));
+    for (const std::string& warning : parsed.warnings) err_ << warning << "\n";
+    times.parse = seconds_since(start);
+
+    start = Clock::now();
+    const geometry::World world(parsed.scene);
+    times.build = seconds_since(start);
+
+    start = Clock::now();
+    // A bar only where someone watches: on a terminal, never into a pipe or a log file.
+    render::Progress progress(progress_label(frame, position),
+                              uint64_t(o_.width) * uint64_t(o_.height), err_,
+                              render::Progress::stderr_is_terminal());
+    const render::RenderResult result =
+        render::render_scene(parsed.scene, world, render_settings(o_), &progress);
+    times.render = seconds_since(start);
+
+    start = Clock::now();
+    render::write_image_atomically(
+        file, {o_.width, o_.height, result.film.rgb(), render::PixelEncoding::linear});
+    times.write = seconds_since(start);
+    report(frame, position, file, parsed.scene.objects.size(), times);
+    if (o_.stats) print_stats(result.stats, times, out_);
+  }
+
+ private:
+  std::string progress_label(const FrameClock& frame, size_t position) const {
+    if (!plan_.animated) return "render";
+    return "frame " + std::to_string(frame.frame_number) + " (" + std::to_string(position + 1) +
+           "/" + std::to_string(plan_.frames.size()) + ")";
+  }
+
+  void report(const FrameClock& frame, size_t position, const std::string& file, size_t objects,
+              const PhaseTimes& times) const {
+    if (o_.quiet) return;
+    if (!plan_.animated) {
+      out_ << "convray: " << o_.scene << ": wrote " << file << " (" << o_.width << "x" << o_.height
+           << ", " << objects << " objects, " << times.total() << " s)\n";
+      return;
+    }
+    out_ << "convray: " << progress_label(frame, position) << ", clock " << frame.clock
+         << ": wrote " << file << " (" << objects << " objects, " << std::fixed
+         << std::setprecision(3) << times.total() << " s)\n"
+         << std::defaultfloat << std::setprecision(6);
+  }
+
+  const RenderOptions& o_;
+  const FramePlan& plan_;
+  std::ostream& out_;
+  std::ostream& err_;
+};
+
+// Everything that can be checked before the work starts: the destination, the video tool.
+void check_before_rendering(const RenderOptions& o) {
+  if (o.output_is_folder) {
+    std::error_code error;
+    std::filesystem::create_directories(std::filesystem::path(o.output).parent_path(), error);
+    if (error) {
+      throw InputError({o.output}, "cannot create the output folder: " + error.message());
+    }
+  }
   render::check_image_destination(o.output);
+  if (!o.video.empty()) check_video_tools(o.video);
+}
+
+void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+  const FramePlan plan = plan_frames(o.animation);
+  for (const std::string& warning : plan.warnings) err << "convray: warning: " << warning << "\n";
+  check_before_rendering(o);
   std::unique_ptr<tbb::global_control> threads;
   if (o.threads > 0) {
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                     size_t(o.threads));
   }
-  PhaseTimes times;
-  Clock::time_point start = Clock::now();
-  const sdl::ParseResult parsed = sdl::parse_file(o.scene, parse_options(o));
-  for (const std::string& warning : parsed.warnings) err << warning << "\n";
-  times.parse = seconds_since(start);
-
-  start = Clock::now();
-  const geometry::World world(parsed.scene);
-  times.build = seconds_since(start);
-
-  start = Clock::now();
-  // A bar only where someone watches: on a terminal, never into a pipe or a log file.
-  render::Progress progress("render", uint64_t(o.width) * uint64_t(o.height), err,
-                            render::Progress::stderr_is_terminal());
-  const render::RenderResult result =
-      render::render_scene(parsed.scene, world, render_settings(o), &progress);
-  times.render = seconds_since(start);
-
-  start = Clock::now();
-  render::write_image_atomically(
-      o.output, {o.width, o.height, result.film.rgb(), render::PixelEncoding::linear});
-  times.write = seconds_since(start);
-
-  if (!o.quiet) {
-    out << "convray: " << o.scene << ": wrote " << o.output << " (" << o.width << "x" << o.height
-        << ", " << parsed.scene.objects.size() << " objects, " << times.total() << " s)\n";
+  const Clock::time_point start = Clock::now();
+  FrameRenderer renderer(o, plan, out, err);
+  std::vector<std::string> files;
+  size_t skipped = 0;
+  for (size_t i = 0; i < plan.frames.size(); ++i) {
+    const FrameClock& frame = plan.frames[i];
+    const std::string file =
+        plan.animated ? frame_file_name(o.output, frame.frame_number, plan.name_digits) : o.output;
+    files.push_back(file);
+    if (o.continue_trace && render::image_file_is_complete(file, o.width, o.height)) {
+      ++skipped;
+      if (!o.quiet) out << "convray: " << file << " is complete; skipped (+C)\n";
+      continue;
+    }
+    renderer.render(frame, i, file);
   }
-  if (o.stats) print_stats(result.stats, times, out);
+  if (plan.animated && !o.quiet) {
+    out << "convray: " << o.scene << ": " << plan.frames.size() - skipped << " frames rendered"
+        << (skipped ? ", " + std::to_string(skipped) + " already complete" : std::string()) << " ("
+        << seconds_since(start) << " s)\n";
+  }
+  if (!o.video.empty()) {
+    assemble_video(files, o.video, o.video_fps);
+    if (!o.quiet) out << "convray: wrote " << o.video << " (" << files.size() << " frames)\n";
+  }
 }
 
 }  // namespace
 
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err) {
   try {
-    render_scene_file(options, out, err);
+    render_frames(options, out, err);
     return 0;
   } catch (const InputError& e) {
     err << e.what() << "\n";
+    return 2;
+  } catch (const UsageError& e) {
+    err << "convray: " << e.what() << "\n";
     return 2;
   } catch (const std::invalid_argument& e) {
     // What the scene asked for cannot be rendered (a degenerate camera, say): still its fault.

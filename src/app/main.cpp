@@ -17,6 +17,7 @@
 #include "app/command_render.hpp"
 #include "app/command_slice.hpp"
 #include "app/render_options.hpp"
+#include "util/error.hpp"
 
 namespace {
 
@@ -189,6 +190,9 @@ int render_main(const std::vector<std::string>& args) {
     options = convray::app::parse_render_arguments(args);
   } catch (const convray::app::UsageError& e) {
     std::cerr << "convray: " << e.what() << "\nRun 'convray --help' for usage.\n";
+    return 2;
+  } catch (const convray::InputError& e) {  // a bad line in an INI file: file:line:col
+    std::cerr << e.what() << "\n";
     return 2;
   }
   const std::filesystem::path scene(options.scene);

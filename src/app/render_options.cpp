@@ -3,73 +3,57 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <cmath>
-#include <filesystem>
+#include <string_view>
+
+#include "app/frame_names.hpp"
+#include "app/ini_file.hpp"
+#include "app/option_values.hpp"
 
 namespace convray::app {
 
 const char* const kRenderUsage =
-    "usage: convray SCENE.pov [options]        (or POV-Ray's switches: "
-    "+ISCENE.pov ...)\n"
+    "usage: convray SCENE.pov [options]     or POV-Ray's: convray +ISCENE.pov [switches]\n"
+    "       convray ANIMATION.ini[SECTION] [options]\n"
     "\n"
-    "Renders a POV-Ray-style scene: convolution objects, blobs, primitives, "
-    "CSG, textures,\n"
-    "lights, reflection and refraction. The image appears complete or not at "
-    "all.\n"
+    "Renders a POV-Ray-style scene: convolution objects, blobs, primitives, CSG, textures,\n"
+    "lights, reflection and refraction; or, with frame options, every frame of an animation\n"
+    "(the scene re-read per frame with its clock). Each image appears complete or not at all.\n"
     "\n"
-    "  -o, --output FILE   image file: .png (8-bit sRGB), .tif (16-bit), .exr "
-    "(linear float)\n"
-    "                      (+OFILE; default: the scene's name with .png, in "
-    "this folder)\n"
+    "Image:\n"
+    "  -o, --output FILE   .png (8-bit sRGB), .tif (16-bit), .exr (linear float); a FOLDER/\n"
+    "                      keeps the scene's name (+OFILE; default: SCENE.png, here)\n"
     "  --width N, --height N    image size (+WN +HN; default 800x600)\n"
-    "  --antialias [T]     adaptive anti-aliasing, threshold T (+A[T]; default "
-    "off, T 0.3)\n"
-    "  --aa-depth N        N x N samples in a supersampled pixel (+RN; default "
-    "3)\n"
-    "  --jitter [J]        jitter the supersamples by J pixels' worth, "
-    "reproducibly (+J[J]; -J off)\n"
+    "  --antialias [T]     adaptive anti-aliasing, threshold T (+A[T]; default off, T 0.3)\n"
+    "  --aa-depth N        N x N samples in a supersampled pixel (+RN; default 3)\n"
+    "  --jitter [J]        jitter the supersamples by J pixels, reproducibly (+J[J]; -J off)\n"
     "  --threads N         render threads (+WTN; default: every core)\n"
-    "  -L, --library DIR   also search DIR for #include files and meshes "
-    "(+LDIR)\n"
+    "Scene:\n"
+    "  -L, --library DIR   also search DIR for #include files and meshes (+LDIR)\n"
     "  --declare ID=VALUE  declare a float identifier (Declare=ID=VALUE)\n"
-    "  --clock VALUE       the scene's clock (+KVALUE; default 0)\n"
-    "  --stats             print rays, timings and memory after the render\n"
+    "  --clock VALUE       a still's clock (+KVALUE; default 0)\n"
+    "Animation (POV-Ray's options; frames are named OUTPUT plus the zero-padded number):\n"
+    "  --initial-frame N   +KFIN (default 1)      --final-frame N   +KFFN (default 1)\n"
+    "  --initial-clock X   +KIX (default 0)       --final-clock X   +KFX (default 1)\n"
+    "  --cyclic            +KC: the clock wraps, the last frame stops one step short\n"
+    "  --subset-start N    +SFN: first frame to render (0 < N < 1: a fraction of them)\n"
+    "  --subset-end N      +EFN: last frame to render (same)\n"
+    "  --frame-step N      Frame_Step=N: every N-th frame\n"
+    "  --continue          +C: skip frames whose image files are already complete\n"
+    "  --video FILE        assemble the frames into FILE (.mp4, .webm, .gif) with ffmpeg\n"
+    "  --fps N             the video's frame rate (default 25)\n"
+    "Output:\n"
+    "  --stats             print rays, timings and memory after each image\n"
     "  --quiet             no summary line\n"
     "  -h, --help          this message\n"
     "\n"
-    "POV-Ray's +D/-D (display), +V/-V, +P/-P, +X/-X and +G?/-G? (console "
-    "output) are accepted\n"
-    "and do nothing. Example:\n"
-    "  convray +Iscenes/soup.pov +Osoup.png +W800 +H600 +A0.3 -D +WT2\n";
+    "POV-Ray's +D/-D (display), +V/-V, +P/-P, +X/-X, +F?, +Q? and +G?/-G? (console output)\n"
+    "are accepted and do nothing. INI files take POV-Ray's keys (Width=, Final_Frame=,\n"
+    "Cyclic_Animation=on, Declare=, Library_Path=, ...), raw switches and [sections].\n"
+    "Examples:\n"
+    "  convray +Iscenes/soup.pov +Osoup.png +W800 +H600 +A0.3 -D +WT2\n"
+    "  convray scenes/animations/walk.ini +SF1 +EF12 --continue\n";
 
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-// The whole text as a finite number, or a UsageError naming `what`.
-double number(const std::string& text, const std::string& what) {
-  double value = 0.0;
-  const char* begin = text.data();
-  const char* end = begin + text.size();
-  if (begin < end && *begin == '+') ++begin;
-  const auto [stop, error] = std::from_chars(begin, end, value);
-  if (error != std::errc() || stop != end || !std::isfinite(value)) {
-    throw UsageError(what + ": expected a number, got '" + text + "'");
-  }
-  return value;
-}
-
-int whole(const std::string& text, const std::string& what, int lo, int hi) {
-  const double v = number(text, what);
-  if (v != std::floor(v) || v < lo || v > hi) {
-    throw UsageError(what + ": expected a whole number from " + std::to_string(lo) + " to " +
-                     std::to_string(hi) + ", got '" + text + "'");
-  }
-  return int(v);
-}
 
 void set_aa_threshold(RenderOptions& o, const std::string& text, const std::string& what) {
   o.antialias = true;
@@ -97,53 +81,52 @@ void set_declare(RenderOptions& o, const std::string& text, const std::string& w
   o.declares.emplace_back(id, number(text.substr(eq + 1), what + " " + id));
 }
 
-// One POV-Ray switch: `on` is true for '+', the body follows the sign.
-void apply_switch(RenderOptions& o, bool on, const std::string& arg) {
-  const std::string body = arg.substr(1), key = lower(body);
-  const auto rest = [&](size_t n) { return body.substr(n); };
-  if (key.starts_with("wt")) {
-    o.threads = whole(rest(2), arg, 1, 1024);
-  } else if (key.starts_with("w") && on) {
-    o.width = whole(rest(1), arg, 1, 32768);
-  } else if (key.starts_with("h") && on) {
-    o.height = whole(rest(1), arg, 1, 32768);
-  } else if (key.starts_with("i") && on) {
-    if (rest(1).empty()) throw UsageError(arg + ": expected the scene file after +I");
-    o.scene = rest(1);
-  } else if (key.starts_with("o") && on) {
-    if (rest(1).empty()) throw UsageError(arg + ": expected the output file after +O");
-    o.output = rest(1);
-  } else if (key.starts_with("l") && on) {
-    if (rest(1).empty()) throw UsageError(arg + ": expected a folder after +L");
-    o.library_paths.push_back(rest(1));
-  } else if (key.starts_with("am") || key == "a" || (key.starts_with("a") && !on)) {
-    if (key.starts_with("am"))
-      throw UsageError(arg + ": only POV-Ray's method 1 (+AM1) is supported");
-    o.antialias = on;
-  } else if (key.starts_with("a")) {
-    set_aa_threshold(o, rest(1), arg);
-  } else if (key.starts_with("r") && on) {
-    o.aa_depth = whole(rest(1), arg, 1, 9);
-  } else if (key.starts_with("j")) {
-    if (on)
-      set_jitter(o, rest(1), arg);
-    else
-      o.jitter = false;
-  } else if (key.starts_with("k") && on && key.size() > 1 &&
-             (std::isdigit((unsigned char)key[1]) || key[1] == '.' || key[1] == '-')) {
-    o.clock = number(rest(1), arg);
-    o.clock_given = true;
-  } else if (key.starts_with("d") || key == "v" || key == "p" || key == "x" ||
-             key.starts_with("g") || key.starts_with("q") || key.starts_with("f")) {
-    // Display, verbosity, pause, abort key, console streams, quality, file
-    // type: no effect.
-  } else {
-    throw UsageError("unknown switch '" + arg + "'; run 'convray --help' for the supported ones");
-  }
+void set_output(RenderOptions& o, const std::string& text, const std::string& what) {
+  if (text.empty()) throw UsageError(what + ": expected a file or folder name");
+  o.output = text;
 }
 
-// The value of `--name VALUE` or `--name=VALUE`; advances `i` past a separate
-// value.
+void set_scene(RenderOptions& o, const std::string& text, const std::string& what) {
+  if (text.empty()) throw UsageError(what + ": expected the scene file");
+  o.scene = text;
+}
+
+// Frame numbers: POV-Ray's are non-negative; a negative one is clamped by plan_frames.
+constexpr long long kFrameLimit = 1'000'000'000;
+long long frame_number(const std::string& text, const std::string& what) {
+  return whole(text, what, -kFrameLimit, kFrameLimit);
+}
+
+// The +K family: +KFIn +KFFn +KIx +KFx +KC / -KC +Kx. `key` is lower case, without the sign.
+bool apply_clock_switch(RenderOptions& o, bool on, const std::string& key, const std::string& body,
+                        const std::string& arg) {
+  AnimationOptions& a = o.animation;
+  const auto rest = [&](size_t n) { return body.substr(n); };
+  if (key == "kc") {
+    a.cyclic = on;
+  } else if (!on || !key.starts_with("k")) {
+    return false;
+  } else if (key.starts_with("kfi")) {
+    a.initial_frame = frame_number(rest(3), arg);
+  } else if (key.starts_with("kff")) {
+    a.final_frame = frame_number(rest(3), arg);
+  } else if (key.starts_with("ki")) {
+    a.initial_clock = number(rest(2), arg);
+  } else if (key.starts_with("kf")) {
+    a.final_clock = number(rest(2), arg);
+  } else {
+    a.clock = number(rest(1), arg);
+  }
+  return true;
+}
+
+bool is_ignored_switch(const std::string& key) {
+  // Display, verbosity, pause, abort key, console streams, quality, file type: no effect.
+  return key.starts_with("d") || key == "v" || key == "p" || key == "x" || key.starts_with("g") ||
+         key.starts_with("q") || key.starts_with("f");
+}
+
+// `--name VALUE` or `--name=VALUE`; advances `i` past a separate value.
 std::string option_value(const std::vector<std::string>& args, size_t& i, const std::string& name) {
   const std::string& arg = args[i];
   const size_t eq = arg.find('=');
@@ -166,68 +149,331 @@ std::string optional_number(const std::vector<std::string>& args, size_t& i) {
   return "";
 }
 
-// `--long` and `-o` options; returns false if `args[i]` is not one.
-bool apply_long_option(RenderOptions& o, const std::vector<std::string>& args, size_t& i) {
-  const std::string& arg = args[i];
-  const std::string name = arg.substr(0, arg.find('='));
-  if (name == "-o" || name == "--output") {
-    o.output = option_value(args, i, name);
-  } else if (name == "--width") {
-    o.width = whole(option_value(args, i, name), name, 1, 32768);
-  } else if (name == "--height") {
-    o.height = whole(option_value(args, i, name), name, 1, 32768);
-  } else if (name == "--antialias") {
-    set_aa_threshold(o, optional_number(args, i), name);
-  } else if (name == "--aa-depth") {
-    o.aa_depth = whole(option_value(args, i, name), name, 1, 9);
-  } else if (name == "--jitter") {
-    set_jitter(o, optional_number(args, i), name);
-  } else if (name == "--threads") {
-    o.threads = whole(option_value(args, i, name), name, 1, 1024);
-  } else if (name == "-L" || name == "--library") {
-    o.library_paths.push_back(option_value(args, i, name));
-  } else if (name == "--declare") {
-    set_declare(o, option_value(args, i, name), name);
-  } else if (name == "--clock") {
-    o.clock = number(option_value(args, i, name), name);
-    o.clock_given = true;
-  } else if (name == "--stats") {
-    o.stats = true;
-  } else if (name == "--quiet") {
-    o.quiet = true;
+// The animation's long options; false if `name` is not one.
+bool apply_animation_option(RenderOptions& o, const std::vector<std::string>& args, size_t& i,
+                            const std::string& name) {
+  AnimationOptions& a = o.animation;
+  const auto value = [&] { return option_value(args, i, name); };
+  if (name == "--clock") {
+    a.clock = number(value(), name);
+  } else if (name == "--initial-frame") {
+    a.initial_frame = frame_number(value(), name);
+  } else if (name == "--final-frame") {
+    a.final_frame = frame_number(value(), name);
+  } else if (name == "--initial-clock") {
+    a.initial_clock = number(value(), name);
+  } else if (name == "--final-clock") {
+    a.final_clock = number(value(), name);
+  } else if (name == "--cyclic") {
+    a.cyclic = true;
+  } else if (name == "--subset-start") {
+    a.subset_start = number(value(), name);
+  } else if (name == "--subset-end") {
+    a.subset_end = number(value(), name);
+  } else if (name == "--frame-step") {
+    a.frame_step = whole(value(), name, 1, kFrameLimit);
+  } else if (name == "--continue") {
+    o.continue_trace = true;
+  } else if (name == "--video") {
+    o.video = value();
+    if (o.video.empty()) throw UsageError("--video: expected a file name");
+  } else if (name == "--fps") {
+    o.video_fps = number(value(), name);
+    if (!(o.video_fps > 0.0 && o.video_fps <= 1000.0)) {
+      throw UsageError("--fps: expected a rate between 0 and 1000 frames per second");
+    }
   } else {
     return false;
   }
   return true;
 }
 
+// `--long` and `-o` options; returns false if `args[i]` is not one.
+bool apply_long_option(RenderOptions& o, const std::vector<std::string>& args, size_t& i) {
+  const std::string& arg = args[i];
+  const std::string name = arg.substr(0, arg.find('='));
+  if (name == "-o" || name == "--output") {
+    set_output(o, option_value(args, i, name), name);
+  } else if (name == "--width") {
+    o.width = int(whole(option_value(args, i, name), name, 1, 32768));
+  } else if (name == "--height") {
+    o.height = int(whole(option_value(args, i, name), name, 1, 32768));
+  } else if (name == "--antialias") {
+    set_aa_threshold(o, optional_number(args, i), name);
+  } else if (name == "--aa-depth") {
+    o.aa_depth = int(whole(option_value(args, i, name), name, 1, 9));
+  } else if (name == "--jitter") {
+    set_jitter(o, optional_number(args, i), name);
+  } else if (name == "--threads") {
+    o.threads = int(whole(option_value(args, i, name), name, 1, 1024));
+  } else if (name == "-L" || name == "--library") {
+    o.library_paths.push_back(option_value(args, i, name));
+  } else if (name == "--declare") {
+    set_declare(o, option_value(args, i, name), name);
+  } else if (name == "--stats") {
+    o.stats = true;
+  } else if (name == "--quiet") {
+    o.quiet = true;
+  } else {
+    return apply_animation_option(o, args, i, name);
+  }
+  return true;
+}
+
+// INI keys that change nothing here: display, console streams, file types and bit depths,
+// bounding controls. Keys that would change the picture in ways convray does not support
+// (partial images, shell hooks, alpha) are not here, so they are errors, like unknown keys.
+constexpr std::string_view kIgnoredIniKeys[] = {"display",          "verbose",
+                                                "pause_when_done",  "test_abort",
+                                                "test_abort_count", "draw_vistas",
+                                                "display_gamma",    "preview_start_size",
+                                                "preview_end_size", "video_mode",
+                                                "palette",          "output_to_file",
+                                                "output_file_type", "bits_per_color",
+                                                "quality",          "all_console",
+                                                "debug_console",    "fatal_console",
+                                                "render_console",   "statistic_console",
+                                                "warning_console",  "all_file",
+                                                "debug_file",       "fatal_file",
+                                                "render_file",      "statistic_file",
+                                                "warning_file",     "create_ini",
+                                                "bounding",         "bounding_threshold",
+                                                "light_buffer",     "vista_buffer",
+                                                "remove_bounds",    "split_unions",
+                                                "sampling_method",  "buffer_output",
+                                                "buffer_size",      "histogram_type",
+                                                "histogram_name",   "histogram_grid_size",
+                                                "version",          "clock_delta"};
+
+// The INI keys convray reads, for "did you mean" hints.
+constexpr std::string_view kIniKeys[] = {"Input_File_Name",
+                                         "Output_File_Name",
+                                         "Width",
+                                         "Height",
+                                         "Antialias",
+                                         "Antialias_Threshold",
+                                         "Antialias_Depth",
+                                         "Jitter",
+                                         "Jitter_Amount",
+                                         "Work_Threads",
+                                         "Library_Path",
+                                         "Declare",
+                                         "Clock",
+                                         "Initial_Frame",
+                                         "Final_Frame",
+                                         "Initial_Clock",
+                                         "Final_Clock",
+                                         "Cyclic_Animation",
+                                         "Subset_Start_Frame",
+                                         "Subset_End_Frame",
+                                         "Frame_Step",
+                                         "Continue_Trace",
+                                         "Include_INI"};
+
+// Edit distance, for suggesting the key someone meant.
+size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// A key no setting has: reported at the key, where a bad value is reported at the value.
+class UnknownIniKey : public UsageError {
+ public:
+  using UsageError::UsageError;
+};
+
+[[noreturn]] void unknown_ini_key(const std::string& key) {
+  std::string_view best;
+  size_t best_distance = 4;  // only close misspellings are suggested
+  for (std::string_view known : kIniKeys) {
+    const size_t d = edit_distance(lower(key), lower(std::string(known)));
+    if (d < best_distance) best = known, best_distance = d;
+  }
+  std::string message = "unknown INI key '" + key + "'";
+  if (!best.empty()) message += "; did you mean " + std::string(best) + "?";
+  throw UnknownIniKey(message);
+}
+
+// The animation keys; false if `key` (lower case) is not one.
+bool apply_ini_animation(RenderOptions& o, const std::string& key, const std::string& value,
+                         const std::string& what) {
+  AnimationOptions& a = o.animation;
+  if (key == "clock") {
+    a.clock = number(value, what);
+  } else if (key == "initial_frame") {
+    a.initial_frame = frame_number(value, what);
+  } else if (key == "final_frame") {
+    a.final_frame = frame_number(value, what);
+  } else if (key == "initial_clock") {
+    a.initial_clock = number(value, what);
+  } else if (key == "final_clock") {
+    a.final_clock = number(value, what);
+  } else if (key == "cyclic_animation") {
+    a.cyclic = boolean(value, what);
+  } else if (key == "subset_start_frame") {
+    a.subset_start = number(value, what);
+  } else if (key == "subset_end_frame") {
+    a.subset_end = number(value, what);
+  } else if (key == "frame_step") {
+    a.frame_step = whole(value, what, 1, kFrameLimit);
+  } else if (key == "continue_trace") {
+    o.continue_trace = boolean(value, what);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// Reads an INI file's entries into the options; errors point into the file.
+void apply_ini_file(RenderOptions& o, const std::string& argument) {
+  for (const IniEntry& entry : read_ini(split_ini_argument(argument))) {
+    try {
+      if (entry.is_switch()) {
+        apply_switch(o, entry.value);
+      } else {
+        apply_ini_setting(o, entry.key, entry.value);
+      }
+    } catch (const UnknownIniKey& e) {
+      throw InputError(entry.loc, e.what());
+    } catch (const UsageError& e) {
+      throw InputError(entry.is_switch() ? entry.loc : entry.value_loc, e.what());
+    }
+  }
+}
+
+// `Key=value` on the command line, as POV-Ray takes it: Frame_Step=3, Declare=N=2.
+bool is_setting_argument(const std::string& arg) {
+  const size_t eq = arg.find('=');
+  return eq != std::string::npos && eq > 0 &&
+         std::all_of(arg.begin(), arg.begin() + std::ptrdiff_t(eq),
+                     [](unsigned char c) { return std::isalpha(c) || c == '_'; });
+}
+
 }  // namespace
+
+void apply_ini_setting(RenderOptions& o, const std::string& key_as_written,
+                       const std::string& value) {
+  const std::string key = lower(key_as_written), what = key_as_written;
+  if (key == "input_file_name") {
+    set_scene(o, value, what);
+  } else if (key == "output_file_name") {
+    set_output(o, value, what);
+  } else if (key == "width") {
+    o.width = int(whole(value, what, 1, 32768));
+  } else if (key == "height") {
+    o.height = int(whole(value, what, 1, 32768));
+  } else if (key == "antialias") {
+    o.antialias = boolean(value, what);
+  } else if (key == "antialias_threshold") {  // POV-Ray: sets the threshold, not the switch
+    o.aa_threshold = number(value, what);
+    if (!(o.aa_threshold >= 0.0)) throw UsageError(what + ": the threshold must be >= 0");
+  } else if (key == "antialias_depth") {
+    o.aa_depth = int(whole(value, what, 1, 9));
+  } else if (key == "jitter") {
+    o.jitter = boolean(value, what);
+  } else if (key == "jitter_amount") {
+    o.jitter_amount = number(value, what);
+    if (o.jitter_amount <= 0.0) o.jitter = false;
+  } else if (key == "work_threads") {
+    o.threads = int(whole(value, what, 1, 1024));
+  } else if (key == "library_path") {
+    if (value.empty()) throw UsageError(what + ": expected a folder");
+    o.library_paths.push_back(value);
+  } else if (key == "declare") {
+    set_declare(o, value, what);
+  } else if (!apply_ini_animation(o, key, value, what) &&
+             std::find(std::begin(kIgnoredIniKeys), std::end(kIgnoredIniKeys), key) ==
+                 std::end(kIgnoredIniKeys)) {
+    unknown_ini_key(key_as_written);
+  }
+}
+
+void apply_switch(RenderOptions& o, const std::string& arg) {
+  if (arg.size() < 2 || (arg[0] != '+' && arg[0] != '-')) {
+    throw UsageError("'" + arg + "' is not a switch (+X or -X)");
+  }
+  const bool on = arg[0] == '+';
+  const std::string body = arg.substr(1), key = lower(body);
+  const auto rest = [&](size_t n) { return body.substr(n); };
+  if (key.starts_with("wt")) {
+    o.threads = int(whole(rest(2), arg, 1, 1024));
+  } else if (key.starts_with("w") && on) {
+    o.width = int(whole(rest(1), arg, 1, 32768));
+  } else if (key.starts_with("h") && on) {
+    o.height = int(whole(rest(1), arg, 1, 32768));
+  } else if (key.starts_with("i") && on) {
+    if (rest(1).empty()) throw UsageError(arg + ": expected the scene file after +I");
+    o.scene = rest(1);
+  } else if (key.starts_with("o") && on) {
+    if (rest(1).empty()) throw UsageError(arg + ": expected the output file after +O");
+    o.output = rest(1);
+  } else if (key.starts_with("l") && on) {
+    if (rest(1).empty()) throw UsageError(arg + ": expected a folder after +L");
+    o.library_paths.push_back(rest(1));
+  } else if (key.starts_with("am") || key == "a" || (key.starts_with("a") && !on)) {
+    if (key.starts_with("am"))
+      throw UsageError(arg + ": only POV-Ray's method 1 (+AM1) is supported");
+    o.antialias = on;
+  } else if (key.starts_with("a")) {
+    set_aa_threshold(o, rest(1), arg);
+  } else if (key.starts_with("r") && on) {
+    o.aa_depth = int(whole(rest(1), arg, 1, 9));
+  } else if (key.starts_with("j")) {
+    on ? set_jitter(o, rest(1), arg) : void(o.jitter = false);
+  } else if (apply_clock_switch(o, on, key, body, arg)) {
+  } else if (key.starts_with("sf") && on) {
+    o.animation.subset_start = number(rest(2), arg);
+  } else if (key.starts_with("ef") && on) {
+    o.animation.subset_end = number(rest(2), arg);
+  } else if (key == "c") {
+    o.continue_trace = on;
+  } else if (!is_ignored_switch(key)) {
+    throw UsageError("unknown switch '" + arg + "'; run 'convray --help' for the supported ones");
+  }
+}
 
 RenderOptions parse_render_arguments(const std::vector<std::string>& args) {
   RenderOptions o;
+  bool positional_scene = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg.empty()) throw UsageError("empty argument");
     if (apply_long_option(o, args, i)) continue;
-    if (lower(arg).starts_with("declare=")) {
-      set_declare(o, arg.substr(8), "Declare=");
+    if (is_setting_argument(arg)) {
+      const size_t eq = arg.find('=');
+      apply_ini_setting(o, arg.substr(0, eq), arg.substr(eq + 1));
     } else if (arg.size() > 1 && (arg[0] == '+' || arg[0] == '-') && arg[1] != '-') {
-      apply_switch(o, arg[0] == '+', arg);
+      apply_switch(o, arg);
     } else if (arg[0] == '-') {
       throw UsageError("unknown option '" + arg + "'; run 'convray --help'");
-    } else if (o.scene.empty()) {
-      o.scene = arg;
-    } else {
+    } else if (is_ini_argument(arg)) {
+      apply_ini_file(o, arg);
+    } else if (positional_scene) {
       throw UsageError("one scene at a time: got '" + o.scene + "' and '" + arg + "'");
+    } else {
+      o.scene = arg;
+      positional_scene = true;
     }
   }
-  if (o.scene.empty()) throw UsageError("no scene file given (convray SCENE.pov, or +ISCENE.pov)");
-  if (o.output.empty()) o.output = default_output_name(o.scene);
+  if (o.scene.empty()) {
+    throw UsageError(
+        "no scene file given (convray SCENE.pov, +ISCENE.pov, or Input_File_Name= "
+        "in an INI file)");
+  }
+  o.output_is_folder = names_folder(o.output);
+  o.output = resolve_output(o.output, o.scene);
+  plan_frames(o.animation);  // bad frame options are usage errors, found before any work
   return o;
-}
-
-std::string default_output_name(const std::string& scene) {
-  return std::filesystem::path(scene).filename().replace_extension(".png").string();
 }
 
 }  // namespace convray::app

@@ -1,5 +1,8 @@
 #include "render/image_file.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -34,6 +37,15 @@ OIIO::TypeDesc stored_type(const ImageFormat& format) {
 
 // `.NAME.partial.EXT` next to NAME.EXT: hidden, and keeping the extension, so that
 // OpenImageIO picks the same writer for it.
+// Asks the kernel to put the file's bytes on the disk (best effort: a failure only loses the
+// guarantee across a power cut, never the file).
+void flush_to_disk(const fs::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
 fs::path partial_path_for(const fs::path& target) {
   std::string name = ".";
   name.append(target.stem().string()).append(".partial").append(target.extension().string());
@@ -87,6 +99,24 @@ void check_image_destination(const std::string& path) {
   }
 }
 
+bool image_file_is_complete(const std::string& path, int width, int height) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) return false;
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+  if (!in) {
+    OIIO::geterror();  // clear the message this failure left
+    return false;
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width != width || spec.height != height || spec.nchannels < 3) return false;
+  // Reading every pixel is what finds a truncated file: the header alone can be intact.
+  std::vector<float> pixels(size_t(width) * size_t(height) * size_t(spec.nchannels));
+  const bool whole = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
+  if (!whole) in->geterror();
+  in->close();
+  return whole;
+}
+
 void write_image_atomically(const std::string& path, const ImagePixels& pixels) {
   const ImageFormat format = image_format_for(path);
   if (pixels.width < 1 || pixels.height < 1 ||
@@ -111,6 +141,7 @@ void write_image_atomically(const std::string& path, const ImagePixels& pixels) 
 
   std::error_code error;
   if (written) {
+    flush_to_disk(partial);  // a crash after the rename must not leave an empty "complete" file
     fs::rename(partial, target, error);
     if (error) problem = error.message();
   }

@@ -48,6 +48,11 @@ void check_image_destination(const std::string& path);
 // (unknown format, missing folder, disk full, ...); no file is left behind then.
 void write_image_atomically(const std::string& path, const ImagePixels& pixels);
 
+// Whether `path` holds a whole image of this size that reads back without error: `+C`
+// (continue) trusts such a frame and skips it. A missing, truncated or damaged file, or one of
+// another size, is not complete.
+bool image_file_is_complete(const std::string& path, int width, int height);
+
 // The sRGB transfer curve, for linear values clamped to [0, 1].
 float encode_srgb(float linear);
 

@@ -70,8 +70,8 @@ TEST(RenderOptions, LongOptionsAndPovRaySwitchesMix) {
   EXPECT_DOUBLE_EQ(o.declares[0].second, 2.5);
   EXPECT_EQ(o.declares[1].first, "N");
   EXPECT_TRUE(o.stats);
-  EXPECT_TRUE(o.clock_given);
-  EXPECT_DOUBLE_EQ(o.clock, 0.25);
+  ASSERT_TRUE(o.animation.clock.has_value());
+  EXPECT_DOUBLE_EQ(*o.animation.clock, 0.25);
 }
 
 TEST(RenderOptions, ConsoleSwitchesPovRayUsersPassAreAccepted) {
