@@ -20,6 +20,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   clang libclang-rt-dev
   povray povray-examples time  # reference renders and timings (bench/, comparison scripts)
+  ffmpeg parallel  # --video assembles frames; GNU parallel spreads frames (docs/render-farm.md)
 )
 missing=()
 for p in "${packages[@]}"; do
