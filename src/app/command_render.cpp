@@ -160,9 +160,22 @@ void check_before_rendering(const RenderOptions& o) {
   if (!o.video.empty()) check_video_tools(o.video);
 }
 
+std::string file_of(const RenderOptions& o, const FramePlan& plan, const FrameClock& frame) {
+  return plan.animated ? frame_file_name(o.output, frame.frame_number, plan.name_digits) : o.output;
+}
+
+// --list-frames: "number<TAB>clock<TAB>file" per frame, clocks to 17 significant digits.
+void list_frames(const RenderOptions& o, const FramePlan& plan, std::ostream& out) {
+  out << std::setprecision(17);
+  for (const FrameClock& frame : plan.frames) {
+    out << frame.frame_number << "\t" << frame.clock << "\t" << file_of(o, plan, frame) << "\n";
+  }
+}
+
 void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err) {
   const FramePlan plan = plan_frames(o.animation);
   for (const std::string& warning : plan.warnings) err << "convray: warning: " << warning << "\n";
+  if (o.list_frames) return list_frames(o, plan, out);
   check_before_rendering(o);
   std::unique_ptr<tbb::global_control> threads;
   if (o.threads > 0) {
@@ -175,8 +188,7 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err)
   size_t skipped = 0;
   for (size_t i = 0; i < plan.frames.size(); ++i) {
     const FrameClock& frame = plan.frames[i];
-    const std::string file =
-        plan.animated ? frame_file_name(o.output, frame.frame_number, plan.name_digits) : o.output;
+    const std::string file = file_of(o, plan, frame);
     files.push_back(file);
     if (o.continue_trace && render::image_file_is_complete(file, o.width, o.height)) {
       ++skipped;

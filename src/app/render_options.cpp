@@ -41,6 +41,8 @@ const char* const kRenderUsage =
     "  --continue          +C: skip frames whose image files are already complete\n"
     "  --video FILE        assemble the frames into FILE (.mp4, .webm, .gif) with ffmpeg\n"
     "  --fps N             the video's frame rate (default 25)\n"
+    "  --list-frames       print each frame's number, clock and file (tab-separated); render\n"
+    "                      nothing (for render-farm scripts: docs/render-farm.md)\n"
     "Output:\n"
     "  --stats             print rays, timings and memory after each image\n"
     "  --quiet             no summary line\n"
@@ -172,6 +174,8 @@ bool apply_animation_option(RenderOptions& o, const std::vector<std::string>& ar
     a.subset_end = number(value(), name);
   } else if (name == "--frame-step") {
     a.frame_step = whole(value(), name, 1, kFrameLimit);
+  } else if (name == "--list-frames") {
+    o.list_frames = true;
   } else if (name == "--continue") {
     o.continue_trace = true;
   } else if (name == "--video") {

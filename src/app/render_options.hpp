@@ -32,6 +32,7 @@ struct RenderOptions {
   bool continue_trace = false;  // +C: skip frames whose files are already complete
   std::string video;            // --video FILE: assemble the frames with ffmpeg
   double video_fps = 25.0;      // --fps
+  bool list_frames = false;     // --list-frames: print the frames (number, clock, file) only
   bool stats = false;           // --stats
   bool quiet = false;           // --quiet: no summary line
 };
