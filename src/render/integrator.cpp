@@ -124,7 +124,8 @@ Vec3 Integrator::direct_light(const HitPoint& hit, double opacity, RenderStats& 
     const LightContribution lit = light_contribution(finish, hit.pigment.rgb, hit.normal, hit.view,
                                                      arrival->to_light, arrival->color * visible);
     diffuse += lit.diffuse;
-    highlights += lit.highlight;
+    // POV-Ray 3.7: a shadowless light (a fill light) makes no phong or specular highlight.
+    if (!scene_.lights[index].shadowless) highlights += lit.highlight;
   }
   return opacity * diffuse + highlights;
 }

@@ -324,6 +324,37 @@ Comparison antialiased_phong_sphere_on_checker() {
   return comparison;
 }
 
+// A shadowless fill light lights diffusely but casts no shadow and, in POV-Ray 3.7, makes no
+// phong or specular highlight.
+Comparison shadowless_fill_light() {
+  const std::string pov =
+      std::string(kHeader) +
+      "light_source { <-4, 6, -3> color rgb 0.7 }\n"
+      "light_source { <5, 3, -6> color rgb 0.6 shadowless }\n"
+      "background { color rgb <0.1, 0.15, 0.3> }\n"
+      "plane { y, 0 pigment { color rgb 0.8 } finish { ambient 0.1 diffuse 0.7 } }\n"
+      "sphere { <0, 1, 0>, 1 pigment { color rgb <0.2, 0.7, 0.4> }\n"
+      "  finish { ambient 0.1 diffuse 0.7 phong 0.9 phong_size 40 specular 0.4 } }\n";
+  auto records = [] {
+    scene::Scene scene = records_with_camera();
+    scene::Light key = point_light(Vec3(-4, 6, -3));
+    key.color = rgb(0.7, 0.7, 0.7);
+    scene::Light fill = point_light(Vec3(5, 3, -6));
+    fill.color = rgb(0.6, 0.6, 0.6);
+    fill.shadowless = true;
+    scene.lights = {key, fill};
+    scene.background = rgb(0.1, 0.15, 0.3);
+    scene.objects.push_back(plane(Vec3(0, 1, 0), 0.0, plain_texture(rgb(0.8, 0.8, 0.8), 0.1, 0.7)));
+    auto ball = plain_texture(rgb(0.2, 0.7, 0.4), 0.1, 0.7);
+    ball->finish.phong = 0.9;
+    ball->finish.phong_size = 40;
+    ball->finish.specular = 0.4;
+    scene.objects.push_back(sphere(Vec3(0, 1, 0), 1.0, ball));
+    return scene;
+  };
+  return {"shadowless_fill_light", pov, records, 40.0};
+}
+
 class AgainstPovRay : public ::testing::TestWithParam<Comparison (*)()> {};
 
 TEST_P(AgainstPovRay, PictureMatchesPovRay) {
@@ -344,7 +375,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, AgainstPovRay,
                          ::testing::Values(&phong_sphere_on_checker, &glass_mirror_spotlight,
                                            &fog_gradient_onion, &ground_fog_and_sky_sphere,
                                            &area_light_adaptive_0, &area_light_adaptive_2,
-                                           &marble_normal, &antialiased_phong_sphere_on_checker));
+                                           &marble_normal, &antialiased_phong_sphere_on_checker,
+                                           &shadowless_fill_light));
 
 }  // namespace
 }  // namespace convray::render
