@@ -7,7 +7,7 @@
 // checks them against the povray binary), including its cyclic case: with +KC the clock runs
 // over final_frame + 1 - initial_frame steps, so the last frame stops one step short of
 // final_clock, and the scene's final_frame reads one more than given. Where POV-Ray's answer
-// is a defect we differ, and say so (docs/animation.md):
+// is a defect we differ, and say so (docs/animations.md):
 //  - a one-frame animation (+KFF1) has clock = initial_clock and clock_delta 0 (POV-Ray: NaN);
 //  - a subset end past the final frame is clamped to it, with a warning (POV-Ray renders
 //    frames past the end, extrapolating the clock); a subset that ends before it starts, and
