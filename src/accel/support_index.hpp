@@ -4,12 +4,16 @@
 //  - along a line: every primitive whose support it crosses, with the exact entry and exit;
 //  - at a point: every primitive whose skeleton lies within its radius of the point.
 // The primitives are not copied: the index keeps the spans it was given, which must outlive it.
+// A triangle group may come with a prebuilt hierarchy (TriangleSupports, shared between
+// indexes: animation frames that keep a mesh) placed by a rigid motion: it is attached as an
+// Embree instance instead of being rebuilt; answers are the same as without it.
 // This header does not include Embree; only accel/*.cpp do.
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
 
+#include "accel/triangle_supports.hpp"
 #include "field/arc.hpp"
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
@@ -21,8 +25,15 @@ namespace convray::accel {
 // order; each span pairs with a radius per primitive (a triangle group shares one radius).
 struct SupportSources {
   struct TriangleGroup {
+    // In the index's space: exact spans and distances are always computed on these.
     std::span<const field::Triangle> triangles;
     double radius = 1.0;
+    // Optional: a hierarchy over the same triangles in its own space (same order, same radius)
+    // and the rigid motion that places it, triangles[i] = placement(prebuilt triangles[i]) up
+    // to rounding. Used as an instance when its margin suffices (required_instance_margin);
+    // otherwise the index builds the group itself. A non-rigid placement is an error.
+    std::shared_ptr<const TriangleSupports> prebuilt = nullptr;
+    Mat4 placement{1.0};
   };
   std::span<const Vec3> sphere_centers;
   std::span<const double> sphere_radii;
@@ -47,8 +58,11 @@ class SupportIndex {
   SupportIndex& operator=(SupportIndex&&) noexcept;
 
   size_t size() const;
-  Box3 bounds() const;          // union of the supports
-  size_t memory_bytes() const;  // what Embree allocated for the structure
+  Box3 bounds() const;  // union of the supports
+  // What Embree allocated for the structure, the prebuilt hierarchies it places included.
+  size_t memory_bytes() const;
+  // How many triangle groups are placed instances of prebuilt hierarchies.
+  size_t instance_count() const;
 
   // Appends every primitive whose support the line origin + t direction (unit direction)
   // crosses with some t in [tmin, tmax]; the interval is the whole crossing, not clipped.
@@ -63,5 +77,13 @@ class SupportIndex {
  private:
   std::unique_ptr<Impl> impl_;
 };
+
+// The union of the supports of `sources`: what SupportIndex(sources).bounds() will be.
+Box3 support_bounds(const SupportSources& sources);
+
+// The margin a prebuilt TriangleSupports whose supports span `local_bounds` (in its own space)
+// needs to be placed in an index whose supports span `index_bounds`: the index's own slack
+// for its float rays, plus the rounding of Embree's float transform into the instance's space.
+double required_instance_margin(const Box3& index_bounds, const Box3& local_bounds);
 
 }  // namespace convray::accel

@@ -16,9 +16,11 @@
 #include "app/frame_names.hpp"
 #include "app/video.hpp"
 #include "geometry/world.hpp"
+#include "implicit/support_cache.hpp"
 #include "render/image_file.hpp"
 #include "render/progress.hpp"
 #include "render/render_scene.hpp"
+#include "sdl/mesh_library.hpp"
 #include "sdl/parser.hpp"
 #include "util/error.hpp"
 
@@ -37,8 +39,10 @@ int clamp_to_int(long long v) {
       std::clamp<long long>(v, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
-sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame) {
+sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame,
+                               std::shared_ptr<sdl::MeshLibrary> meshes) {
   sdl::ParseOptions p;
+  p.mesh_library = std::move(meshes);
   p.image_width = o.width;
   p.image_height = o.height;
   p.clock = frame.clock;
@@ -71,8 +75,12 @@ struct PhaseTimes {
   double total() const { return parse + build + render + write; }
 };
 
-void print_stats(const render::RenderStats& s, const PhaseTimes& t, std::ostream& out) {
-  out << "rays: camera " << s.camera_rays << ", shadow " << s.shadow_rays << "\n"
+void print_stats(const render::RenderStats& s, const PhaseTimes& t,
+                 const implicit::SupportCache& cache, std::ostream& out) {
+  const implicit::SupportCache::Counts reuse = cache.counts();
+  out << "mesh hierarchies: " << reuse.builds << " built, " << reuse.reuses
+      << " reused (this animation so far)\n"
+      << "rays: camera " << s.camera_rays << ", shadow " << s.shadow_rays << "\n"
       << "camera rays that hit: " << s.hits << "\n"
       << "field evaluations: " << s.trace.field_evaluations << ", roots: " << s.trace.roots
       << ", fits: " << s.trace.fits << "\n"
@@ -84,7 +92,9 @@ void print_stats(const render::RenderStats& s, const PhaseTimes& t, std::ostream
 }
 
 // One animation's frames rendered in order; everything a frame needs that does not change
-// from frame to frame lives here.
+// from frame to frame lives here: the mesh files read so far, and the hierarchies over the
+// supports of mesh components, which a frame with the same mesh, radius and placement (or a
+// rigid move of it) takes over from the frame before (docs/animations.md).
 class FrameRenderer {
  public:
   FrameRenderer(const RenderOptions& options, const FramePlan& plan, std::ostream& out,
@@ -95,12 +105,14 @@ class FrameRenderer {
   void render(const FrameClock& frame, size_t position, const std::string& file) {
     PhaseTimes times;
     Clock::time_point start = Clock::now();
-    const sdl::ParseResult parsed = sdl::parse_file(o_.scene, parse_options(o_, frame));
+    const sdl::ParseResult parsed =
+        sdl::parse_file(o_.scene, parse_options(o_, frame, meshes_));
     for (const std::string& warning : parsed.warnings) err_ << warning << "\n";
     times.parse = seconds_since(start);
 
     start = Clock::now();
-    const geometry::World world(parsed.scene);
+    const geometry::World world(parsed.scene, &hierarchies_);
+    hierarchies_.next_frame();  // keeps what this frame used, drops the rest
     times.build = seconds_since(start);
 
     start = Clock::now();
@@ -117,7 +129,7 @@ class FrameRenderer {
         file, {o_.width, o_.height, result.film.rgb(), render::PixelEncoding::linear});
     times.write = seconds_since(start);
     report(frame, position, file, parsed.scene.objects.size(), times);
-    if (o_.stats) print_stats(result.stats, times, out_);
+    if (o_.stats) print_stats(result.stats, times, hierarchies_, out_);
   }
 
  private:
@@ -143,6 +155,8 @@ class FrameRenderer {
 
   const RenderOptions& o_;
   const FramePlan& plan_;
+  std::shared_ptr<sdl::MeshLibrary> meshes_ = std::make_shared<sdl::MeshLibrary>();
+  implicit::SupportCache hierarchies_;
   std::ostream& out_;
   std::ostream& err_;
 };

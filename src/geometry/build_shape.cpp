@@ -41,6 +41,7 @@ void require(bool ok, const char* message) {
 
 class ShapeBuilder {
  public:
+  explicit ShapeBuilder(implicit::SupportCache* cache) : cache_(cache) {}
   ShapePtr build(const scene::Object& object, const Inherited& parent);
 
  private:
@@ -61,6 +62,7 @@ class ShapeBuilder {
   // POV-Ray's default texture (black pigment), shared by every object without one.
   scene::TexturePtr default_texture_ =
       std::make_shared<const scene::Texture>(scene::default_texture());
+  implicit::SupportCache* cache_;  // for convolution objects' meshes; may be null
 };
 
 SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
@@ -136,7 +138,7 @@ ShapePtr ShapeBuilder::make(const scene::TriangleMesh& m, const Inherited& own) 
 }
 
 ShapePtr ShapeBuilder::make(const scene::Implicit& i, const Inherited& own) const {
-  return std::make_unique<ImplicitShape>(i, surface_for(own));
+  return std::make_unique<ImplicitShape>(i, surface_for(own), cache_);
 }
 
 ShapePtr ShapeBuilder::make(const scene::Csg& c, const Inherited& own) {
@@ -188,8 +190,8 @@ ShapePtr ShapeBuilder::build(const scene::Object& object, const Inherited& paren
 
 }  // namespace
 
-ShapePtr build_shape(const scene::Object& object) {
-  ShapeBuilder builder;
+ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache) {
+  ShapeBuilder builder(cache);
   return builder.build(object, Inherited{});
 }
 

@@ -19,8 +19,9 @@ class ImplicitShape final : public Shape {
  public:
   // Throws std::invalid_argument for what ConvolutionSurface refuses (a radius that is not
   // positive, a threshold that is not positive) and for component textures that name no
-  // component.
-  ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surface);
+  // component. `cache` (optional) provides the meshes' hierarchies (support_cache.hpp).
+  ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surface,
+                implicit::SupportCache* cache = nullptr);
 
   Box3 bounds() const override;
   void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,

@@ -8,6 +8,10 @@
 #include "geometry/shape.hpp"
 #include "scene/scene.hpp"
 
+namespace convray::implicit {
+class SupportCache;
+}
+
 namespace convray::geometry {
 
 // Builds the traceable form of one object record (and its children). Throws InputError at
@@ -15,11 +19,14 @@ namespace convray::geometry {
 // Conventions: CSG children, clipped_by and bounded_by objects are in the object's own space
 // (its transform moves them with it); a child without texture or interior takes its
 // parent's, an object without any gets scene::default_texture() and Interior{}.
-ShapePtr build_shape(const scene::Object& object);
+// Convolution objects take their meshes' hierarchies from `cache` when given one (animations,
+// implicit/support_cache.hpp); the shapes answer the same either way.
+ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache = nullptr);
 
 class World {
  public:
-  explicit World(const scene::Scene& scene);
+  // Objects are built one after the other; `cache` (optional) is handed to each.
+  explicit World(const scene::Scene& scene, implicit::SupportCache* cache = nullptr);
   ~World();
   World(World&&) noexcept;
 

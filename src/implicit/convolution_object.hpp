@@ -3,6 +3,8 @@
 // own strength and support radius, summed into one field F and its surface F = T. Negative
 // strengths subtract. This is the description a scene (or `convray quick`) fills in; the
 // traceable, queryable form is ConvolutionSurface.
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,9 +20,19 @@ struct Weight {
   double radius = 1.0;  // support radius R of the kernel (1 - r^2/R^2)^2
 };
 
+// Where a mesh component's triangles came from: a file's triangles as loaded, shared by every
+// component (and every animation frame) that places the same file, and the placement. It lets
+// a SupportCache recognise a mesh it has prepared before (support_cache.hpp).
+struct MeshSource {
+  std::shared_ptr<const std::vector<field::Triangle>> local;  // the file's triangles
+  Mat4 placement{1.0};  // local -> object space: triangles[i] = placement(local[i])
+};
+
 struct MeshComponent {
+  // In object space; what every reader of the component uses (fields, bounds, textures).
   std::vector<field::Triangle> triangles;  // one weight for the whole mesh (keeps it small)
   Weight weight;
+  std::optional<MeshSource> source = std::nullopt;  // absent for inline triangles
 };
 struct SegmentComponent {
   field::Segment segment;

@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "implicit/support_cache.hpp"
 #include "implicit/surface_impl.hpp"
 #include "implicit/surface_roots.hpp"
 
@@ -21,9 +22,31 @@ void check_weight(const Weight& w, const char* what) {
   }
 }
 
+// Whether the component's source describes its triangles (the same count; the support index
+// checks the placement triangle by triangle and builds the group itself where it strays).
+bool has_source(const MeshComponent& m) {
+  return m.source && m.source->local && m.source->local->size() == m.triangles.size();
+}
+
+// Mesh groups whose component has a source take their hierarchy from the cache.
+void take_prebuilt(accel::SupportSources& sources,
+                   const std::vector<const MeshComponent*>& group_meshes, SupportCache& cache) {
+  const Box3 index_bounds = accel::support_bounds(sources);
+  for (size_t g = 0; g < group_meshes.size(); ++g) {
+    const MeshComponent& mesh = *group_meshes[g];
+    if (!has_source(mesh)) continue;
+    auto& group = sources.triangle_groups[g];
+    const SupportCache::Placed placed =
+        cache.acquire(*mesh.source, group.triangles, group.radius, index_bounds);
+    group.prebuilt = placed.supports;
+    group.placement = placed.placement;
+  }
+}
+
 }  // namespace
 
-ConvolutionSurface::Impl::Impl(const ConvolutionObject& object) : threshold(object.threshold) {
+ConvolutionSurface::Impl::Impl(const ConvolutionObject& object, SupportCache* cache)
+    : threshold(object.threshold) {
   if (!(threshold > 0.0) || !std::isfinite(threshold)) {
     throw std::invalid_argument("convolution object: the threshold must be positive and finite");
   }
@@ -67,12 +90,14 @@ ConvolutionSurface::Impl::Impl(const ConvolutionObject& object) : threshold(obje
   size_t triangle_count = 0;
   for (const MeshComponent& m : object.meshes) triangle_count += m.triangles.size();
   triangles.reserve(triangle_count);
+  std::vector<const MeshComponent*> group_meshes;  // parallel to `groups`
   for (const MeshComponent& m : object.meshes) {
     if (m.triangles.empty()) continue;
     note(m.weight, "mesh");
     const auto first = uint32_t(triangles.size());
     triangles.insert(triangles.end(), m.triangles.begin(), m.triangles.end());
     groups.push_back({first, uint32_t(triangles.size()), m.weight.radius, m.weight.strength});
+    group_meshes.push_back(&m);
   }
   if (!std::isfinite(min_radius)) min_radius = 1.0;  // an empty object
 
@@ -98,6 +123,7 @@ ConvolutionSurface::Impl::Impl(const ConvolutionObject& object) : threshold(obje
                                                               g.end_triangle - g.first_triangle),
          g.radius});
   }
+  if (cache) take_prebuilt(sources, group_meshes, *cache);
   index = std::make_unique<accel::SupportIndex>(sources);
   gather_in_chunks = spheres_only && expected_supports_per_line() > kChunkedSupportsPerLine;
 }
@@ -112,8 +138,8 @@ double ConvolutionSurface::Impl::expected_supports_per_line() const {
   return area > 0.0 ? 4.0 * shadows / area : 0.0;
 }
 
-ConvolutionSurface::ConvolutionSurface(const ConvolutionObject& object)
-    : impl_(std::make_unique<Impl>(object)) {}
+ConvolutionSurface::ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache)
+    : impl_(std::make_unique<Impl>(object, cache)) {}
 ConvolutionSurface::~ConvolutionSurface() = default;
 ConvolutionSurface::ConvolutionSurface(ConvolutionSurface&&) noexcept = default;
 ConvolutionSurface& ConvolutionSurface::operator=(ConvolutionSurface&&) noexcept = default;

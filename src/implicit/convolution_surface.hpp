@@ -15,9 +15,13 @@
 
 namespace convray::implicit {
 
+class SupportCache;
+
 class ConvolutionSurface {
  public:
-  explicit ConvolutionSurface(const ConvolutionObject& object);
+  // With a cache, mesh components that carry a MeshSource take the hierarchy over their
+  // supports from it (built there once, then shared); the answers are the same either way.
+  explicit ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache = nullptr);
   ~ConvolutionSurface();
   ConvolutionSurface(ConvolutionSurface&&) noexcept;
   ConvolutionSurface& operator=(ConvolutionSurface&&) noexcept;

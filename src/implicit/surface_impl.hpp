@@ -46,7 +46,7 @@ struct ConvolutionSurface::Impl {
   bool gather_in_chunks = false;
   std::unique_ptr<accel::SupportIndex> index;  // built last, over the arrays above
 
-  explicit Impl(const ConvolutionObject& object);
+  Impl(const ConvolutionObject& object, SupportCache* cache);
   // How many sphere supports a random line through the bounds crosses, on average.
   double expected_supports_per_line() const;
 

@@ -3,9 +3,9 @@
 #include <exception>
 #include <glm/geometric.hpp>
 
-#include "mesh/load.hpp"
 #include "sdl/component_modifiers.hpp"
 #include "sdl/item_helpers.hpp"
+#include "sdl/mesh_library.hpp"
 
 namespace convray::sdl::items {
 
@@ -40,33 +40,29 @@ void parse_component_tail(Parser& parser, Block& block, PendingComponent& compon
   component.texture = modifiers.texture();
 }
 
-std::vector<field::Triangle> load_mesh_triangles(Parser& parser, const SourceLoc& loc,
-                                                 const std::string& name) {
+SharedTriangles load_mesh_triangles(Parser& parser, const SourceLoc& loc, const std::string& name) {
   const std::string path = parser.resolve_file(name, loc);
   try {
-    const mesh::LoadedMesh loaded = mesh::load_mesh(path);
-    std::vector<field::Triangle> triangles;
-    triangles.reserve(loaded.soup.size());
-    for (size_t t = 0; t < loaded.soup.size(); ++t) {
-      const auto corners = loaded.soup.corners(t);
-      triangles.push_back({corners[0], corners[1], corners[2]});
-    }
-    return triangles;
+    MeshLibrary* library = parser.options().mesh_library.get();
+    return library ? library->load(path) : MeshLibrary::read(path);
   } catch (const std::exception& error) {  // InputError from the readers, or out of memory
     parser.fail(loc, "cannot load mesh \"" + name + "\": " + error.what());
   }
 }
 
+// The component keeps the file's triangles (shared with every frame that reads the file) and
+// the placement, besides the placed copy everything else reads.
 void parse_mesh_component(Parser& parser, Block& block, PendingComponent& component) {
   const std::string name = parser.parse_string();
   ComponentModifiers modifiers(parser, "convolution mesh");
   parse_component_tail(parser, block, component, modifiers);
-  component.triangles = load_mesh_triangles(parser, component.loc, name);
+  const SharedTriangles local = load_mesh_triangles(parser, component.loc, name);
   const scene::Transform& transform = modifiers.transform();
-  if (transform.is_identity()) return;
-  for (field::Triangle& triangle : component.triangles) {
-    triangle = {transform.point(triangle.a), transform.point(triangle.b),
-                transform.point(triangle.c)};
+  component.source = implicit::MeshSource{local, transform.forward()};
+  component.triangles.reserve(local->size());
+  for (const field::Triangle& triangle : *local) {
+    component.triangles.push_back(
+        {transform.point(triangle.a), transform.point(triangle.b), transform.point(triangle.c)});
   }
 }
 
@@ -164,7 +160,8 @@ void add_component(PendingComponent& component, const implicit::Weight& weight,
   switch (component.kind) {
     case Kind::mesh:
       index = object.meshes.size();
-      object.meshes.push_back({std::move(component.triangles), weight});
+      object.meshes.push_back(
+          {std::move(component.triangles), weight, std::move(component.source)});
       break;
     case Kind::segment:
       index = object.segments.size();

@@ -20,6 +20,7 @@ struct PendingComponent {
   double radius_scale = 1.0;     // from the component's uniform scale
   bool single_triangle = false;  // `triangle { }`: grouped with its neighbours of equal weight
   std::vector<field::Triangle> triangles;  // mesh, triangle
+  std::optional<implicit::MeshSource> source;  // mesh: the file's triangles and placement
   field::Segment segment;
   field::Arc arc;
   Vec3 point{0.0};

@@ -1,11 +1,14 @@
 #pragma once
 // What the command line tells the scene: the image size, the animation clock, where includes
 // are searched, identifiers declared from outside, and the limits that stop runaway scenes.
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace convray::sdl {
+
+class MeshLibrary;
 
 struct ParseOptions {
   int image_width = 800, image_height = 600;
@@ -26,6 +29,9 @@ struct ParseOptions {
   int max_macro_depth = 256;
   long long max_loop_iterations = 10'000'000;   // per #while / #for loop
   long long max_tokens = 2'000'000'000;         // tokens read in all
+  // Mesh files kept across parses (an animation's frames; sdl/mesh_library.hpp); without
+  // one, each parse reads its meshes afresh.
+  std::shared_ptr<MeshLibrary> mesh_library;
 };
 
 }  // namespace convray::sdl

@@ -1,0 +1,42 @@
+#pragma once
+// Mesh files read once per animation: the parser asks the library for a convolution mesh's
+// triangles; the same file (resolved path, size and modification time alike) gives the same
+// shared triangles, so that later stages recognise it (implicit::MeshSource, SupportCache).
+// A file that changed on disk is read again. Thread-safe.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "field/triangle.hpp"
+
+namespace convray::sdl {
+
+using SharedTriangles = std::shared_ptr<const std::vector<field::Triangle>>;
+
+class MeshLibrary {
+ public:
+  // The triangles of the mesh file at `path` (resolved already): read now, or kept from an
+  // earlier call when the file's size and modification time are unchanged. Throws what
+  // mesh::load_mesh throws.
+  SharedTriangles load(const std::string& path);
+  // Reads the file, keeping nothing.
+  static SharedTriangles read(const std::string& path);
+
+  size_t reads() const;  // files read (not answered from the library)
+  size_t size() const;   // files kept
+
+ private:
+  struct Entry {
+    uintmax_t size = 0;
+    int64_t modified = 0;  // the file clock's ticks
+    SharedTriangles triangles;
+  };
+  mutable std::mutex mutex_;
+  std::map<std::string, Entry> entries_;
+  size_t reads_ = 0;
+};
+
+}  // namespace convray::sdl
