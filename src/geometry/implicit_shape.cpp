@@ -1,5 +1,6 @@
 #include "geometry/implicit_shape.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -48,11 +49,10 @@ ImplicitShape::ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surfa
 }
 
 void ImplicitShape::index_components(const scene::Implicit& record) {
-  components_ = record.object;
-  // Which listed component has which surface description.
-  std::vector<std::vector<const SurfaceInfo*>> surface_of(6);
+  const implicit::ConvolutionObject& object = record.object;
+  surface_of_.resize(6);
   for (int k = 0; k < 6; ++k) {
-    surface_of[size_t(k)].assign(component_count(components_, Kind(k)), object_surface_.get());
+    surface_of_[size_t(k)].assign(component_count(object, Kind(k)), object_surface_.get());
   }
   for (const scene::ComponentTexture& given : record.component_textures) {
     if (given.index >= record.component_order.size()) {
@@ -60,80 +60,39 @@ void ImplicitShape::index_components(const scene::Implicit& record) {
                                   ", which does not exist");
     }
     const auto [kind, index] = record.component_order[given.index];
-    if (index >= component_count(components_, kind)) {
+    if (index >= component_count(object, kind)) {
       throw std::invalid_argument("component order names a missing component");
     }
     auto info = std::make_shared<SurfaceInfo>(*object_surface_);
     if (given.texture) info->texture = given.texture;
     component_surfaces_.push_back(info);
-    surface_of[size_t(kind)][index] = info.get();
+    surface_of_[size_t(kind)][index] = info.get();
   }
-  for (int k = 0; k < 6; ++k) {
-    for (size_t i = 0; i < surface_of[size_t(k)].size(); ++i) {
-      textured_lookup_.push_back({Kind(k), i, surface_of[size_t(k)][i]});
-    }
-  }
-  for (const implicit::MeshComponent& mesh : components_.meshes) {
-    Box3 box;
-    for (const field::Triangle& t : mesh.triangles) {
-      box.extend(t.a);
-      box.extend(t.b);
-      box.extend(t.c);
-    }
-    if (!is_empty(box)) {
-      box.lo -= mesh.weight.radius;
-      box.hi += mesh.weight.radius;
-    }
-    mesh_reach_.push_back(box);
-  }
-}
-
-double ImplicitShape::contribution(const Component& c, const Vec3& p) const {
-  const implicit::ConvolutionObject& o = components_;
-  switch (c.kind) {
-    case Kind::mesh: {
-      const implicit::MeshComponent& mesh = o.meshes[c.index];
-      if (!contains(mesh_reach_[c.index], p)) return 0.0;
-      double sum = 0.0;
-      for (const field::Triangle& t : mesh.triangles) {
-        sum += field::triangle_value(p, t, mesh.weight.radius);
-      }
-      return mesh.weight.strength * sum;
-    }
-    case Kind::segment: {
-      const auto& s = o.segments[c.index];
-      return s.weight.strength * field::segment_value(p, s.segment, s.weight.radius);
-    }
-    case Kind::arc: {
-      const auto& a = o.arcs[c.index];
-      return a.weight.strength * field::arc_value(p, a.arc, a.weight.radius);
-    }
-    case Kind::point: {
-      const auto& q = o.points[c.index];
-      return q.weight.strength * field::point_value(p, q.center, q.weight.radius);
-    }
-    case Kind::blob_sphere: {
-      const auto& b = o.blob_spheres[c.index];
-      return field::blob_sphere_field(p, b.center, b.weight.radius, b.weight.strength).value;
-    }
-    case Kind::blob_cylinder: {
-      const auto& b = o.blob_cylinders[c.index];
-      return field::blob_cylinder_field(p, b.base, b.apex, b.weight.radius, b.weight.strength)
-          .value;
-    }
-  }
-  return 0.0;
 }
 
 const SurfaceInfo* ImplicitShape::surface_at(const Vec3& p) const {
-  if (textured_lookup_.empty()) return object_surface_.get();
+  if (surface_of_.empty()) return object_surface_.get();
+  thread_local std::vector<implicit::ConvolutionSurface::ComponentValue> values;
+  thread_local std::vector<implicit::ConvolutionSurface::ComponentValue> sums;
+  values.clear();
+  sums.clear();
+  surface_.component_values(p, values);
+  // Few components reach any one point (a mesh's many triangles are one component).
+  for (const auto& v : values) {
+    auto it = std::find_if(sums.begin(), sums.end(),
+                           [&](const auto& s) { return s.component == v.component; });
+    if (it == sums.end()) {
+      sums.push_back(v);
+    } else {
+      it->value += v.value;
+    }
+  }
   const SurfaceInfo* dominant = object_surface_.get();
   double largest = 0.0;
-  for (const Component& c : textured_lookup_) {
-    const double value = contribution(c, p);
-    if (value > largest) {
-      largest = value;
-      dominant = c.surface;
+  for (const auto& s : sums) {
+    if (s.value > largest) {
+      largest = s.value;
+      dominant = surface_of_[size_t(s.component.kind)][s.component.index];
     }
   }
   return dominant;

@@ -6,7 +6,9 @@
 // Per-component textures: POV-Ray blends the textures of the components by their share of
 // the field at the point. We simplify to the dominant one: a crossing takes the surface
 // description of the component contributing most to the field there (components without a
-// texture of their own count as the object's).
+// texture of their own count as the object's). Only the primitives whose support holds the
+// point are asked (the support index's point query), so a mesh component of 100,000
+// triangles costs what its few nearby triangles cost.
 #include <vector>
 
 #include "geometry/primitive.hpp"
@@ -35,24 +37,15 @@ class ImplicitShape final : public Shape {
   const SurfaceInfo* surface_at(const Vec3& p) const;
 
  private:
-  // One component of the object, kept for the texture lookup: its field at p, with the
-  // strength applied.
-  struct Component {
-    scene::Implicit::Kind kind;
-    size_t index;  // in that kind's vector of components_
-    const SurfaceInfo* surface;
-  };
-  double contribution(const Component& component, const Vec3& p) const;
   void index_components(const scene::Implicit& record);
 
   implicit::ConvolutionSurface surface_;
   bool is_blob_;
   SurfaceInfoPtr object_surface_;
-  // Only when some component has its own texture:
-  implicit::ConvolutionObject components_;
-  std::vector<Component> textured_lookup_;
+  // Only when some component has its own texture: each component's surface description, by
+  // kind and index (the object's where the component has none), and the descriptions made.
+  std::vector<std::vector<const SurfaceInfo*>> surface_of_;
   std::vector<SurfaceInfoPtr> component_surfaces_;
-  std::vector<Box3> mesh_reach_;  // each mesh component's bounds grown by its radius
 };
 
 }  // namespace convray::geometry

@@ -5,6 +5,7 @@
 // traceable, queryable form is ConvolutionSurface.
 #include <memory>
 #include <optional>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,15 @@
 #include "util/math.hpp"
 
 namespace convray::implicit {
+
+// The kinds of component, in the order scene::Implicit lists them.
+enum class ComponentKind { mesh, segment, arc, point, blob_sphere, blob_cylinder };
+// One component of a ConvolutionObject: its kind and its index in that kind's vector.
+struct ComponentRef {
+  ComponentKind kind = ComponentKind::point;
+  uint32_t index = 0;
+  bool operator==(const ComponentRef&) const = default;
+};
 
 struct Weight {
   double strength = 1.0;

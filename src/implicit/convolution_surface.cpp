@@ -96,11 +96,14 @@ ConvolutionSurface::Impl::Impl(const ConvolutionObject& object, SupportCache* ca
     note(m.weight, "mesh");
     const auto first = uint32_t(triangles.size());
     triangles.insert(triangles.end(), m.triangles.begin(), m.triangles.end());
-    groups.push_back({first, uint32_t(triangles.size()), m.weight.radius, m.weight.strength});
+    groups.push_back({first, uint32_t(triangles.size()), m.weight.radius, m.weight.strength,
+                      uint32_t(&m - object.meshes.data())});
     group_meshes.push_back(&m);
   }
   if (!std::isfinite(min_radius)) min_radius = 1.0;  // an empty object
 
+  point_count = uint32_t(object.points.size());
+  segment_count = uint32_t(object.segments.size());
   capsule_base = uint32_t(sphere_centers.size());
   arc_base = capsule_base + uint32_t(capsules.size());
   triangle_base = arc_base + uint32_t(arcs.size());
@@ -165,6 +168,14 @@ field::FieldSample ConvolutionSurface::field(const Vec3& p) const {
   field::FieldSample sum;
   for (uint32_t id : ids) sum += impl_->sample(id, p);
   return sum;
+}
+
+void ConvolutionSurface::component_values(const Vec3& p,
+                                          std::vector<ComponentValue>& out) const {
+  thread_local std::vector<uint32_t> ids;
+  ids.clear();
+  impl_->index->contain(p, ids);
+  for (uint32_t id : ids) out.push_back({impl_->component(id), impl_->value(id, p)});
 }
 
 void ConvolutionSurface::roots(const Ray& ray, double tmin, double tmax, std::vector<double>& out,

@@ -36,6 +36,15 @@ class ConvolutionSurface {
   // The exact field and gradient at p (sum over the primitives whose support holds p).
   field::FieldSample field(const Vec3& p) const;
 
+  // The weighted field at p of each primitive whose support holds p, named by the component
+  // it belongs to (a mesh's triangles each under their mesh), appended to `out`: what a
+  // per-component texture needs to know which component dominates at p.
+  struct ComponentValue {
+    ComponentRef component;
+    double value = 0.0;
+  };
+  void component_values(const Vec3& p, std::vector<ComponentValue>& out) const;
+
   // Every t in [tmin, tmax] where F(ray.at(t)) = T, ascending, each polished on the exact field.
   void roots(const Ray& ray, double tmin, double tmax, std::vector<double>& out,
              TraceStats& stats) const;

@@ -32,10 +32,14 @@ struct ConvolutionSurface::Impl {
   struct Group {
     uint32_t first_triangle, end_triangle;
     double radius, strength;
+    uint32_t mesh = 0;  // the mesh component's index in ConvolutionObject::meshes
   };
   std::vector<Group> groups;
 
   uint32_t capsule_base = 0, arc_base = 0, triangle_base = 0;
+  // Spheres are the points, then the blob spheres; capsules the segments, then the blob
+  // cylinders: these say where the second kind starts (for component()).
+  uint32_t point_count = 0, segment_count = 0;
   double threshold = 1.0;
   double min_radius = 1.0;  // smallest support radius: the length scale of tolerances
   // Nothing but spheres: every ray goes straight to the sphere sweep (sphere_sweep.hpp).
@@ -54,6 +58,21 @@ struct ConvolutionSurface::Impl {
     auto it = std::upper_bound(groups.begin(), groups.end(), triangle,
                                [](uint32_t t, const Group& g) { return t < g.end_triangle; });
     return *it;
+  }
+
+  // The component primitive `id` belongs to.
+  ComponentRef component(uint32_t id) const {
+    if (id < capsule_base) {
+      return id < point_count ? ComponentRef{ComponentKind::point, id}
+                              : ComponentRef{ComponentKind::blob_sphere, id - point_count};
+    }
+    if (id < arc_base) {
+      const uint32_t i = id - capsule_base;
+      return i < segment_count ? ComponentRef{ComponentKind::segment, i}
+                               : ComponentRef{ComponentKind::blob_cylinder, i - segment_count};
+    }
+    if (id < triangle_base) return {ComponentKind::arc, id - arc_base};
+    return {ComponentKind::mesh, group_of(id - triangle_base).mesh};
   }
 
   // Weighted field of primitive `id` (the support index's numbering) at p.

@@ -81,7 +81,7 @@ struct Implicit {
   implicit::ConvolutionObject object;
   // For per-component textures: the order in which components were listed, as (kind, index in
   // that kind's vector of `object`).
-  enum class Kind { mesh, segment, arc, point, blob_sphere, blob_cylinder };
+  using Kind = implicit::ComponentKind;
   std::vector<std::pair<Kind, size_t>> component_order;
   std::vector<ComponentTexture> component_textures;
   bool is_blob = false;  // written as `blob`: POV-Ray's inside rule F > T - 1e-6 applies

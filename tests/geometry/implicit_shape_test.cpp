@@ -5,6 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
+#include "field/arc.hpp"
+#include "field/blob.hpp"
+#include "field/point.hpp"
+#include "field/segment.hpp"
+#include "field/triangle.hpp"
+
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry {
@@ -138,6 +147,69 @@ TEST(Implicit, DominantComponentGivesTheTexture) {
   // A component texture for a component that does not exist is an input error.
   record.component_textures.push_back({7, left});
   EXPECT_THROW(build_shape(*make_object(record)), InputError);
+}
+
+// The dominant component at a point, found through the support index, is the one a brute-force
+// sum of every component's closed-form field names (a mesh's field is the sum over all its
+// triangles; no index involved).
+TEST(Implicit, DominantComponentMatchesBruteForceSums) {
+  using Kind = scene::Implicit::Kind;
+  scene::Implicit record;
+  implicit::ConvolutionObject& o = record.object;
+  implicit::MeshComponent sheet;  // a wavy 12 x 12 grid of triangles around z = 0
+  for (int i = 0; i < 12; ++i) {
+    for (int j = 0; j < 12; ++j) {
+      auto at = [](int u, int v) {
+        return Vec3(-1.5 + 0.25 * u, -1.5 + 0.25 * v, 0.1 * std::sin(u + 0.5 * v));
+      };
+      sheet.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      sheet.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  sheet.weight = {1.0, 0.4};
+  o.meshes.push_back(sheet);
+  o.segments.push_back({{{-1, -1, 0.3}, {1, 1, 0.4}}, {2.0, 0.5}});
+  field::Arc arc;
+  ASSERT_TRUE(field::arc_through({-1, 1, -0.2}, {0, 1.4, -0.3}, {1, 1, -0.2}, arc));
+  o.arcs.push_back({arc, {1.5, 0.5}});
+  o.points.push_back({{0.5, -0.8, 0.2}, {3.0, 0.6}});
+  o.blob_cylinders.push_back({{-1, 0.5, 0}, {-0.2, -0.6, 0.1}, {1.2, 0.5}});
+  o.threshold = 0.3;
+  const Kind kinds[] = {Kind::mesh, Kind::segment, Kind::arc, Kind::point, Kind::blob_cylinder};
+  std::vector<scene::TexturePtr> textures;
+  for (size_t k = 0; k < 5; ++k) {
+    record.component_order.push_back({kinds[k], 0});
+    textures.push_back(testing::make_texture(0.1 + 0.15 * double(k)));
+    record.component_textures.push_back({k, textures.back()});
+  }
+  auto own = std::make_shared<SurfaceInfo>();
+  own->texture = testing::make_texture(0.99);
+  const ImplicitShape shape(record, own);
+
+  auto brute_force = [&](const Vec3& p) {
+    double sums[5] = {0, 0, 0, 0, 0};
+    for (const field::Triangle& t : sheet.triangles) sums[0] += field::triangle_value(p, t, 0.4);
+    sums[1] = 2.0 * field::segment_value(p, o.segments[0].segment, 0.5);
+    sums[2] = 1.5 * field::arc_value(p, arc, 0.5);
+    sums[3] = 3.0 * field::point_value(p, o.points[0].center, 0.6);
+    sums[4] = field::blob_cylinder_field(p, o.blob_cylinders[0].base, o.blob_cylinders[0].apex,
+                                         0.5, 1.2).value;
+    size_t best = 5;
+    double largest = 0.0;
+    for (size_t k = 0; k < 5; ++k) {
+      if (sums[k] > largest) largest = sums[k], best = k;
+    }
+    return best == 5 ? own->texture : textures[best];
+  };
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(-1.8, 1.8);
+  int checked = 0;
+  for (int n = 0; n < 3000; ++n) {
+    const Vec3 p(coordinate(random), coordinate(random), 0.4 * coordinate(random));
+    EXPECT_EQ(shape.surface_at(p)->texture, brute_force(p)) << p.x << " " << p.y << " " << p.z;
+    checked += brute_force(p) != own->texture;
+  }
+  EXPECT_GT(checked, 1500);  // most points lie in some support
 }
 
 TEST(Implicit, ConvolutionInsideIsFieldAtLeastThreshold) {
