@@ -41,4 +41,6 @@ if command -v povray >/dev/null && [ -d /usr/share/povray-3.7/scenes/objects ]; 
     cp out/compare-docs/${name}_povray.png out/compare-docs/${name}_convray.png $out/povray/
   done
 fi
+# The animations' first, middle and last frames (docs/animations.md).
+bash scripts/make-animation-images.sh
 echo "pictures written to $out/"
