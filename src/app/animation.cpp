@@ -8,8 +8,8 @@
 namespace convray::app {
 namespace {
 
-// A frame count beyond which an animation is surely a typo (and its plan would not fit in
-// memory): a million frames is eleven hours of film at 25 frames per second.
+// A frame count beyond which an animation is surely a typo: ten million frames are 111 hours
+// of film at 25 frames per second (and the plan alone would take most of a gigabyte).
 constexpr long long kMaxFrames = 10'000'000;
 
 FrameClock still_frame(const AnimationOptions& o) {

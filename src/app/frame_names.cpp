@@ -38,14 +38,4 @@ std::string frame_file_name(const std::string& still_name, long long frame, int 
   return stem + number + extension;
 }
 
-std::string frame_file_pattern(const std::string& still_name, int digits) {
-  const auto [stem, extension] = split_at_extension(still_name);
-  std::string escaped;  // a literal % in the name is %% to ffmpeg
-  for (char c : stem) {
-    escaped += c;
-    if (c == '%') escaped += '%';
-  }
-  return escaped + "%0" + std::to_string(digits) + "d" + extension;
-}
-
 }  // namespace convray::app

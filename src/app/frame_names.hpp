@@ -18,7 +18,4 @@ std::string resolve_output(const std::string& output, const std::string& scene);
 // The file of one frame, from the still's file name.
 std::string frame_file_name(const std::string& still_name, long long frame, int digits);
 
-// ffmpeg's pattern for the same files: out/walk%02d.png.
-std::string frame_file_pattern(const std::string& still_name, int digits);
-
 }  // namespace convray::app

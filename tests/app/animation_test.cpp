@@ -159,8 +159,6 @@ TEST(FrameNames, PovRaysNumbering) {
   EXPECT_EQ(frame_file_name("foo.bar.png", 12, 2), "foo.bar12.png");
   EXPECT_EQ(frame_file_name("c.png", 99, 3), "c099.png");
   EXPECT_EQ(frame_file_name("run.d/c.png", 100, 3), "run.d/c100.png");
-  EXPECT_EQ(frame_file_pattern("out/walk.png", 2), "out/walk%02d.png");
-  EXPECT_EQ(frame_file_pattern("100%.png", 2), "100%%%02d.png");
   EXPECT_TRUE(names_folder("x/"));
   EXPECT_FALSE(names_folder("x.png"));
 }
