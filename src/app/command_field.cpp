@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/declared_object.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_field.hpp"
@@ -108,28 +109,11 @@ int answer_points(const FieldFunction& field, std::istream& in, std::ostream& ou
   return 0;
 }
 
-// The declared object `name` of the scene, which must be a convolution object
-// or a blob.
-const scene::Object& declared_implicit(const sdl::ParseResult& parsed, const FieldOptions& o) {
-  const SourceLoc where{o.scene_path};
-  const auto found = parsed.globals.find(o.object_name);
-  if (found == parsed.globals.end()) {
-    throw InputError(where, "no identifier '" + o.object_name + "' is declared in the scene");
-  }
-  const scene::ObjectPtr* object = found->second.get<scene::ObjectPtr>();
-  if (!object || !std::holds_alternative<scene::Implicit>((*object)->shape)) {
-    throw InputError(found->second.loc, "'" + o.object_name + "' is " +
-                                            sdl::type_name(found->second) +
-                                            ", not a convolution object or blob");
-  }
-  return **object;
-}
-
 int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
   sdl::ParseOptions parse_options;
   parse_options.library_paths = o.library_paths;
   const sdl::ParseResult parsed = sdl::parse_file(o.scene_path, parse_options);
-  const scene::Object& object = declared_implicit(parsed, o);
+  const scene::Object& object = declared_implicit(parsed, o.scene_path, o.object_name);
   const implicit::ConvolutionSurface surface(std::get<scene::Implicit>(object.shape).object);
   const scene::Transform& placed = object.transform;
   // F_world(p) = F(M^-1 p), so grad F_world = M^-T grad F: the normal rule of

@@ -43,17 +43,6 @@ struct PhaseTimes {
   double load = 0, build = 0, render = 0, write = 0;
 };
 
-// The paper's protocol: scale uniformly so that the largest extent is `size`, and centre the
-// bounding box at the origin (size 400 fills (-200,-200,-200)-(200,200,200)).
-void fit_into_box(mesh::TriangleSoup& soup, double size) {
-  const Box3 box = soup.bounds();
-  const Vec3 extent = box.extent();
-  const double largest = std::max({extent.x, extent.y, extent.z});
-  const Vec3 center = 0.5 * (box.lo + box.hi);
-  const double scale = size / largest;  // largest > 0: every kept triangle has an area
-  for (Vec3& v : soup.vertices) v = (v - center) * scale;
-}
-
 // T from --threshold or --offset (default R/2) for a mesh of strength 1; a bad offset is a
 // command-line error.
 double quick_threshold(const QuickOptions& o, double radius) {
@@ -73,7 +62,7 @@ struct QuickObject {
 // threshold resolved.
 QuickObject load_object(const QuickOptions& o) {
   mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
-  if (o.fit_box) fit_into_box(loaded.soup, *o.fit_box);
+  if (o.fit_box) mesh::fit_into_box(loaded.soup, *o.fit_box);
   QuickObject model;
   model.radius = o.radius ? *o.radius : mesh::advised_radius(mesh::compute_stats(loaded.soup));
   model.object.threshold = quick_threshold(o, model.radius);

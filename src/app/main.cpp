@@ -13,6 +13,7 @@
 
 #include "app/command_field.hpp"
 #include "app/command_info.hpp"
+#include "app/command_polygonize.hpp"
 #include "app/command_quick.hpp"
 #include "app/command_render.hpp"
 #include "app/command_slice.hpp"
@@ -33,7 +34,8 @@ constexpr const char* kDescription =
     "  echo '0 0 0' | convray field --mesh scenes/models/soup.obj --radius 0.2\n"
     "  echo '0 0 0' | convray field scenes/soup.pov --object Soup\n"
     "  convray slice scenes/models/soup.obj --radius 0.25 --offset 0.1 -o slice.png\n"
-    "  convray quick scenes/models/soup.obj --radius 0.2 -o soup.png\n";
+    "  convray quick scenes/models/soup.obj --radius 0.2 -o soup.png\n"
+    "  convray polygonize scenes/models/soup.obj --radius 0.25 --offset 0.1 -o soup_surface.obj\n";
 
 // The whole text as a decimal number (std::from_chars: no hex, no trailing junk, no throw).
 std::optional<double> parse_number(const std::string& text) {
@@ -174,7 +176,8 @@ void finish_quick_options(QuickArguments& q) {
 }
 
 bool is_command(const std::string& word) {
-  return word == "info" || word == "field" || word == "slice" || word == "quick";
+  return word == "info" || word == "field" || word == "slice" || word == "quick" ||
+         word == "polygonize";
 }
 
 // `convray SCENE.pov ...` and `convray +ISCENE.pov ...`: not a subcommand, so the render.
@@ -198,11 +201,51 @@ int render_main(const std::vector<std::string>& args) {
   const std::filesystem::path scene(options.scene);
   if (!scene.has_extension() && !std::filesystem::exists(scene)) {
     std::cerr << "convray: unknown command '" << options.scene
-              << "' (expected info, field, slice, quick or a scene file)\n"
+              << "' (expected info, field, slice, quick, polygonize or a scene file)\n"
                  "Run 'convray --help' for usage.\n";
     return 2;
   }
   return convray::app::run_render(options, std::cout, std::cerr);
+}
+
+// `convray polygonize`: the options straight into PolygonizeOptions.
+CLI::App* add_polygonize_command(CLI::App& app, convray::app::PolygonizeOptions& p) {
+  CLI::App* cmd = app.add_subcommand(
+      "polygonize",
+      "Write the convolution surface F = T as a closed, 2-manifold, consistently oriented "
+      "triangle mesh without self-intersections: of a mesh's triangles (convolved with "
+      "(1 - r^2/R^2)^2), or of a convolution object or blob declared in a scene (--object). "
+      "Marching tetrahedra on a sparse lattice that only visits the primitives' supports; "
+      "every vertex on the exact surface (|F - T| <= 1e-6 T), normals from the exact gradient. "
+      "By default the lattice is refined until every triangle's centre is within R/50 of the "
+      "surface. Example: convray polygonize bunny.obj --radius 0.004 --offset 0.002 --outer "
+      "-o bunny_closed.obj");
+  cmd->add_option("INPUT", p.input, "mesh file (.obj .ply .stl .off, optionally .gz), or a "
+                  "scene file with --object")->required();
+  cmd->add_option("--object", p.object_name, "the declared convolution object or blob of the "
+                  "scene, placed by its transforms");
+  cmd->add_option("-L,--library", p.library_paths,
+                  "also search this folder for the scene's #include and mesh files");
+  cmd->add_option("--radius", p.radius, "meshes: kernel radius R (default: the advised "
+                  "radius of 'convray info')")->check(kPositive);
+  cmd->add_option("--strength", p.strength, "meshes: strength s (default 1)")->check(kPositive);
+  cmd->add_option("--fit-box", p.fit_box, "meshes: first scale the largest extent to SIZE, "
+                  "centred at the origin (the paper's protocol: 400)")->check(kPositive);
+  auto* offset = cmd->add_option("--offset", p.offset,
+                                 "meshes: surface at distance D from flat regions (default R/2)");
+  offset->check(kFinite);
+  cmd->add_option("--threshold", p.threshold, "the raw threshold T (overrides --offset, or a "
+                  "scene object's threshold)")->check(kFinite)->excludes(offset);
+  auto* cell = cmd->add_option("--cell", p.cell, "lattice spacing H")->check(kPositive);
+  cmd->add_option("--max-error", p.max_error, "refine the lattice until every triangle's centre "
+                  "is within E of the surface (default R/50)")->check(kPositive)->excludes(cell);
+  cmd->add_flag("--outer", p.outer, "keep only the shells reachable from infinity (a closed "
+                "input otherwise gives an outer and an inner shell)");
+  cmd->add_flag("--stats", p.stats, "also print blocks visited and field evaluations");
+  cmd->add_flag("--ascii", p.ascii, "PLY and STL as text (default binary)");
+  cmd->add_option("-o,--output", p.output, "mesh file to write: .obj .ply .stl (.off)")
+      ->required();
+  return cmd;
 }
 
 // Checks what CLI11 cannot: a scene with --object, or a mesh with --radius.
@@ -280,6 +323,9 @@ int main(int argc, char** argv) {
   QuickArguments quick_arguments;
   CLI::App* quick = add_quick_command(app, quick_arguments);
 
+  convray::app::PolygonizeOptions polygonize_options;
+  CLI::App* polygonize = add_polygonize_command(app, polygonize_options);
+
   try {
     app.parse(argc, argv);
     if (*slice && !parse_size(slice_size, slice_options.width, slice_options.height)) {
@@ -304,7 +350,7 @@ int main(int argc, char** argv) {
     const bool unknown_command = argc > 1 && argv[1][0] != '-' && !is_command(argv[1]);
     std::cerr << "convray: "
               << (unknown_command ? "unknown command '" + std::string(argv[1]) +
-                                        "' (expected info, field, slice or quick)"
+                                        "' (expected info, field, slice, quick or polygonize)"
                                   : std::string(e.what()))
               << "\nRun 'convray --help' for usage.\n";
     return 2;
@@ -314,5 +360,6 @@ int main(int argc, char** argv) {
   if (*slice) return convray::app::run_slice(slice_options, std::cout, std::cerr);
   if (*quick) return convray::app::run_quick(quick_arguments.options, std::cout, std::cerr);
   if (*field) return convray::app::run_field(field_options, std::cin, std::cout, std::cerr);
+  if (*polygonize) return convray::app::run_polygonize(polygonize_options, std::cout, std::cerr);
   return 2;
 }

@@ -1,5 +1,7 @@
 #include "mesh/soup.hpp"
 
+#include <algorithm>
+
 namespace convray::mesh {
 
 Box3 TriangleSoup::bounds() const {
@@ -8,6 +10,16 @@ Box3 TriangleSoup::bounds() const {
     for (uint32_t index : tri) box.extend(vertices[index]);
   }
   return box;
+}
+
+void fit_into_box(TriangleSoup& soup, double size) {
+  const Box3 box = soup.bounds();
+  if (box.empty()) return;
+  const Vec3 extent = box.extent();
+  const double largest = std::max({extent.x, extent.y, extent.z});
+  const Vec3 center = 0.5 * (box.lo + box.hi);
+  const double scale = largest > 0.0 ? size / largest : 1.0;
+  for (Vec3& v : soup.vertices) v = (v - center) * scale;
 }
 
 }  // namespace convray::mesh

@@ -31,4 +31,9 @@ struct TriangleSoup {
   }
 };
 
+// The paper's protocol (Table 1): scale uniformly so that the largest extent of the bounds is
+// `size`, and centre the bounds at the origin (400 fills (-200,-200,-200)-(200,200,200)).
+// A soup without extent is only centred.
+void fit_into_box(TriangleSoup& soup, double size);
+
 }  // namespace convray::mesh

@@ -71,18 +71,29 @@ void write_point(Output& out, const Vec3& p) {
   out.number(p.z);
 }
 
-void write_obj(const TriangleSoup& soup, Output& out) {
+void write_obj(const TriangleSoup& soup, const std::vector<Vec3>* normals, Output& out) {
   out.text("# convray triangle soup\n");
   for (const Vec3& p : soup.vertices) {
     out.text("v ");
     write_point(out, p);
     out.text("\n");
   }
+  if (normals) {
+    for (const Vec3& n : *normals) {
+      out.text("vn ");
+      write_point(out, n);
+      out.text("\n");
+    }
+  }
   for (const Triangle& t : soup.triangles) {
     out.text("f");
     for (uint32_t index : t) {
       out.text(" ");
       out.integer(uint64_t{index} + 1);  // OBJ counts from 1
+      if (normals) {
+        out.text("//");  // vertex//normal: the normal with the vertex's own number
+        out.integer(uint64_t{index} + 1);
+      }
     }
     out.text("\n");
   }
@@ -108,19 +119,30 @@ void write_off(const TriangleSoup& soup, Output& out) {
   }
 }
 
-void write_ply(const TriangleSoup& soup, Output& out, bool binary) {
+void write_ply(const TriangleSoup& soup, const std::vector<Vec3>* normals, Output& out,
+               bool binary) {
   out.text("ply\n");
   out.text(binary ? "format binary_little_endian 1.0\n" : "format ascii 1.0\n");
   out.text("comment convray triangle soup\nelement vertex ");
   out.integer(soup.vertices.size());
-  out.text("\nproperty double x\nproperty double y\nproperty double z\nelement face ");
+  out.text("\nproperty double x\nproperty double y\nproperty double z\n");
+  if (normals) out.text("property double nx\nproperty double ny\nproperty double nz\n");
+  out.text("element face ");
   out.integer(soup.triangles.size());
   out.text("\nproperty list uchar uint vertex_indices\nend_header\n");
-  for (const Vec3& p : soup.vertices) {
+  for (size_t v = 0; v < soup.vertices.size(); ++v) {
+    const Vec3& p = soup.vertices[v];
     if (binary) {
       for (int axis = 0; axis < 3; ++axis) out.little_endian(p[axis]);
+      if (normals) {
+        for (int axis = 0; axis < 3; ++axis) out.little_endian((*normals)[v][axis]);
+      }
     } else {
       write_point(out, p);
+      if (normals) {
+        out.text(" ");
+        write_point(out, (*normals)[v]);
+      }
       out.text("\n");
     }
   }
@@ -180,11 +202,12 @@ void write_stl_binary(const TriangleSoup& soup, Output& out) {
   }
 }
 
-void write_format(const TriangleSoup& soup, MeshFormat format, bool binary, Output& out) {
+void write_format(const TriangleSoup& soup, const std::vector<Vec3>* normals, MeshFormat format,
+                  bool binary, Output& out) {
   switch (format) {
-    case MeshFormat::Obj: return write_obj(soup, out);
-    case MeshFormat::Off: return write_off(soup, out);
-    case MeshFormat::Ply: return write_ply(soup, out, binary);
+    case MeshFormat::Obj: return write_obj(soup, normals, out);
+    case MeshFormat::Off: return write_off(soup, out);  // OFF has no normals
+    case MeshFormat::Ply: return write_ply(soup, normals, out, binary);
     case MeshFormat::Stl: return binary ? write_stl_binary(soup, out) : write_stl_ascii(soup, out);
   }
 }
@@ -205,7 +228,10 @@ std::string temporary_path(const std::string& path) {
 
 }  // namespace
 
-void save_mesh(const TriangleSoup& soup, const std::string& path, MeshEncoding encoding) {
+void save_mesh(const TriangleSoup& soup, const std::string& path, MeshEncoding encoding,
+               const std::vector<Vec3>* vertex_normals) {
+  if (vertex_normals && vertex_normals->size() != soup.vertices.size())
+    fail(path, "internal error: one normal per vertex expected");
   FileFormat format = format_from_name(path);
   if (format.gzip) fail(path, "writing .gz files is not supported");
   bool binary = is_binary(format.format, encoding, path);
@@ -216,7 +242,7 @@ void save_mesh(const TriangleSoup& soup, const std::string& path, MeshEncoding e
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (!file) fail(path, std::string("cannot create ") + temporary + ": " + std::strerror(errno));
   Output out(file);
-  write_format(soup, format.format, binary, out);
+  write_format(soup, vertex_normals, format.format, binary, out);
   bool written = out.finish();
   bool closed = std::fclose(file) == 0;
   if (!written || !closed) {

@@ -7,6 +7,7 @@
 // The file appears complete or not at all: everything is written to a temporary file next
 // to it, which is then renamed over the path.
 #include <string>
+#include <vector>
 
 #include "mesh/soup.hpp"
 
@@ -18,8 +19,12 @@ enum class MeshEncoding {
   Binary,   // PLY: binary little-endian; STL: binary. OBJ and OFF have none (an error).
 };
 
+// With `vertex_normals` (one per vertex), OBJ gets `vn` lines and faces `f a//a b//b c//c`,
+// PLY gets nx, ny, nz properties; STL keeps its facet normals and OFF has none.
 // Throws InputError for an unknown extension (or `.gz`, which is not written), an encoding
 // the format does not have, or a file that cannot be written.
-void save_mesh(const TriangleSoup& soup, const std::string& path, MeshEncoding encoding = MeshEncoding::Default);
+void save_mesh(const TriangleSoup& soup, const std::string& path,
+               MeshEncoding encoding = MeshEncoding::Default,
+               const std::vector<Vec3>* vertex_normals = nullptr);
 
 }  // namespace convray::mesh

@@ -1,0 +1,226 @@
+#include "app/command_polygonize.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+
+#include "app/declared_object.hpp"
+#include "app/soup_triangles.hpp"
+#include "implicit/convolution_surface.hpp"
+#include "implicit/mesh_field.hpp"
+#include "implicit/threshold.hpp"
+#include "mesh/format.hpp"
+#include "mesh/load.hpp"
+#include "mesh/stats.hpp"
+#include "mesh/write.hpp"
+#include "polygonize/outer_shells.hpp"
+#include "polygonize/surface_error.hpp"
+#include "render/progress.hpp"
+#include "sdl/parser.hpp"
+#include "util/error.hpp"
+
+namespace convray::app {
+
+namespace {
+
+const SourceLoc kCommandLine{"command line"};
+
+// The field to polygonize, the objects it reads from, and the kernel radius that sets the
+// default resolution.
+struct PreparedField {
+  polygonize::FieldSource source;
+  double radius = 1.0;
+  std::shared_ptr<const void> owner;  // keeps the evaluator the source's functions call alive
+};
+
+PreparedField prepare_mesh(const PolygonizeOptions& o) {
+  mesh::LoadedMesh loaded = mesh::load_mesh(o.input);
+  if (o.fit_box) mesh::fit_into_box(loaded.soup, *o.fit_box);
+  PreparedField prepared;
+  prepared.radius = o.radius ? *o.radius : mesh::advised_radius(mesh::compute_stats(loaded.soup));
+  try {
+    prepared.source.threshold =
+        implicit::resolve_threshold(o.strength, prepared.radius, o.offset, o.threshold);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(kCommandLine, e.what());
+  }
+  auto field = std::make_shared<implicit::MeshField>(soup_triangles(loaded.soup), prepared.radius,
+                                                     o.strength);
+  implicit::ConvolutionObject supports_only;
+  supports_only.meshes.push_back({field->triangles(), {o.strength, prepared.radius}});
+  prepared.source.supports = polygonize::support_boxes(supports_only);
+  prepared.source.field = [field](const Vec3& p) { return field->field(p); };
+  prepared.source.value = [field](const Vec3& p) { return field->value(p); };
+  prepared.owner = field;
+  return prepared;
+}
+
+double smallest_radius(const implicit::ConvolutionObject& object) {
+  double r = std::numeric_limits<double>::infinity();
+  for (const auto& c : object.meshes) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.segments) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.arcs) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.points) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.blob_spheres) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.blob_cylinders) r = std::min(r, c.weight.radius);
+  return r;
+}
+
+// A declared object, placed by its transform: the mesh comes out where the scene puts it.
+PreparedField prepare_scene(const PolygonizeOptions& o) {
+  sdl::ParseOptions parse_options;
+  parse_options.library_paths = o.library_paths;
+  const sdl::ParseResult parsed = sdl::parse_file(o.input, parse_options);
+  const scene::Object& object = declared_implicit(parsed, o.input, o.object_name);
+  const implicit::ConvolutionObject& convolution = std::get<scene::Implicit>(object.shape).object;
+  PreparedField prepared;
+  prepared.radius = smallest_radius(convolution);
+  if (!std::isfinite(prepared.radius)) {
+    throw InputError(SourceLoc{o.input}, "'" + o.object_name + "' has no components");
+  }
+  // The scene's own threshold, unless the command line gives one; the placement scales
+  // lengths, so the default resolution follows it.
+  prepared.source.threshold = o.threshold.value_or(convolution.threshold);
+  const scene::Transform placed = object.transform;
+  if (placed.is_similarity(1e-9)) prepared.radius *= placed.uniform_scale();
+  for (const Box3& box : polygonize::support_boxes(convolution)) {
+    prepared.source.supports.push_back(polygonize::transform_box(placed.forward(), box));
+  }
+  auto surface = std::make_shared<implicit::ConvolutionSurface>(convolution);
+  // F_world(p) = F(M^-1 p), so grad F_world = M^-T grad F.
+  prepared.source.field = [surface, placed](const Vec3& p) {
+    field::FieldSample s = surface->field(placed.inverse_point(p));
+    s.gradient = placed.normal(s.gradient);
+    return s;
+  };
+  prepared.owner = surface;
+  return prepared;
+}
+
+void check_options(const PolygonizeOptions& o) {
+  const bool scene = !o.object_name.empty();
+  if (scene && (o.radius || o.offset || o.fit_box || o.strength != 1.0)) {
+    throw InputError(kCommandLine,
+                     "--radius, --strength, --offset and --fit-box are for meshes; a scene "
+                     "object has its own (--threshold T overrides its threshold)");
+  }
+  if (o.threshold && !(*o.threshold > 0.0)) {
+    throw InputError(kCommandLine,
+                     "--threshold must be > 0: the outside of every support, where "
+                     "F = 0, must be outside the surface");
+  }
+  if (!scene && !(o.strength > 0.0)) {
+    throw InputError(kCommandLine,
+                     "--strength must be > 0 for a mesh (a negative field has no "
+                     "surface at a positive threshold)");
+  }
+  if (o.output.empty()) throw InputError(kCommandLine, "-o OUT.(obj|ply|stl) is required");
+}
+
+struct Extraction {
+  polygonize::SurfaceMesh mesh;
+  polygonize::PolygonizeStats stats;
+  double cell = 0.0;
+  double error = -1.0;  // max distance from the surface, when measured
+  int passes = 1;
+};
+
+Extraction extract(const PreparedField& prepared, const PolygonizeOptions& o, std::ostream& err) {
+  std::unique_ptr<render::Progress> progress;
+  polygonize::PolygonizeOptions options;
+  const bool terminal = render::Progress::stderr_is_terminal();
+  options.on_start = [&](uint64_t blocks) {
+    progress = std::make_unique<render::Progress>("polygonize", blocks, err, terminal);
+  };
+  options.on_blocks_done = [&](uint64_t blocks) { progress->advance(blocks); };
+  Extraction result;
+  if (o.cell) {
+    options.cell = *o.cell;
+    result.mesh = polygonize::polygonize(prepared.source, options, &result.stats);
+    result.cell = *o.cell;
+  } else {
+    // Default: within R/50 of the surface, starting from a cell of R/2.
+    const double bound = o.max_error.value_or(prepared.radius / 50.0);
+    polygonize::ErrorBoundedResult r = polygonize::polygonize_to_error(
+        prepared.source, bound, 0.5 * prepared.radius, options, &result.stats);
+    result.mesh = std::move(r.mesh);
+    result.cell = r.cell;
+    result.error = r.error;
+    result.passes = r.passes;
+  }
+  if (progress) progress->finish();
+  return result;
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+void report(const Extraction& e, const mesh::MeshStats& topology, size_t shells_kept,
+            const PolygonizeOptions& o, double seconds, std::ostream& out) {
+  out << "polygonize: " << topology.triangles << " triangles, " << topology.vertices
+      << " vertices, cell " << number(e.cell);
+  if (e.error >= 0.0) {
+    out << " (" << e.passes << (e.passes == 1 ? " pass" : " passes")
+        << ", max distance from the surface " << number(e.error) << ")";
+  }
+  out << "\n  boundary edges " << topology.boundary_edges << ", non-manifold edges "
+      << topology.non_manifold_edges << ", inconsistently oriented edges "
+      << topology.inconsistent_edges << ", components " << topology.connected_components
+      << ", Euler characteristic " << topology.euler_characteristic() << "\n";
+  if (o.outer) out << "  --outer: kept " << shells_kept << " shell(s) reachable from infinity\n";
+  out << "  max |F - T| / T at the vertices: " << number(e.stats.max_residual);
+  if (e.stats.unconverged) out << " (" << e.stats.unconverged << " at jumps of the field)";
+  out << "\n";
+  if (o.stats) {
+    out << "  blocks " << e.stats.blocks << ", field evaluations " << e.stats.field_evaluations
+        << "\n";
+  }
+  out << "wrote " << o.output << " in " << number(seconds) << " s\n";
+}
+
+}  // namespace
+
+int run_polygonize(const PolygonizeOptions& o, std::ostream& out, std::ostream& err) {
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    check_options(o);
+    // The output's format is checked before the work, not after it.
+    if (mesh::format_from_name(o.output).gzip) {
+      throw InputError(kCommandLine, "cannot write .gz meshes: " + o.output);
+    }
+    const PreparedField prepared = o.object_name.empty() ? prepare_mesh(o) : prepare_scene(o);
+    Extraction e = extract(prepared, o, err);
+    size_t shells_kept = 0;
+    if (o.outer) shells_kept = polygonize::keep_outer_shells(e.mesh);
+    if (e.mesh.soup.triangles.empty()) {
+      err << "convray polygonize: the surface is empty (F < T everywhere); nothing written\n";
+      return 1;
+    }
+    mesh::save_mesh(e.mesh.soup, o.output,
+                    o.ascii ? mesh::MeshEncoding::Ascii : mesh::MeshEncoding::Default,
+                    &e.mesh.normals);
+    const mesh::MeshStats topology = mesh::compute_stats(e.mesh.soup);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report(e, topology, shells_kept, o, seconds, out);
+    return 0;
+  } catch (const InputError& e) {
+    err << e.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    err << "convray polygonize: " << e.what() << "\n";
+    return 2;
+  } catch (const std::runtime_error& e) {
+    err << "convray polygonize: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace convray::app

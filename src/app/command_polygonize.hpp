@@ -1,0 +1,32 @@
+#pragma once
+// `convray polygonize`: the surface F = T of a mesh's convolution, or of a convolution object
+// declared in a scene, as a closed 2-manifold triangle mesh file (src/polygonize/).
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace convray::app {
+
+struct PolygonizeOptions {
+  std::string input;                       // a mesh file, or a scene file with object_name
+  std::string object_name;                 // --object NAME: the declared object of the scene
+  std::vector<std::string> library_paths;  // -L, for the scene's includes and meshes
+  std::optional<double> radius;            // meshes: R (default: the advised radius)
+  double strength = 1.0;                   // meshes
+  std::optional<double> fit_box;           // meshes: scale the largest extent to this first
+  std::optional<double> offset;            // meshes: surface at distance D (default R/2)
+  std::optional<double> threshold;         // T itself (overrides a scene object's threshold)
+  std::optional<double> cell;              // lattice spacing
+  std::optional<double> max_error;         // or: the largest distance from the surface
+  bool outer = false;                      // keep only the shells reachable from infinity
+  bool stats = false;                      // print the extraction's figures
+  std::string output;                      // .obj .ply .stl (.off)
+  bool ascii = false;                      // PLY/STL as text
+};
+
+// Returns the exit code: 0; 1 when the surface is empty; 2 for bad input (the message, with
+// file:line:col where it applies, goes to `err`). Nothing is written unless it succeeds.
+int run_polygonize(const PolygonizeOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace convray::app

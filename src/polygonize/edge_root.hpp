@@ -1,0 +1,27 @@
+#pragma once
+// The point where the surface F = T crosses one lattice edge, found on the exact field.
+#include <functional>
+
+#include "field/sample.hpp"
+#include "util/math.hpp"
+
+namespace convray::polygonize {
+
+struct EdgeRoot {
+  Vec3 position{0.0};
+  field::FieldSample sample;  // F and grad F at `position`
+  int evaluations = 0;
+  bool converged = false;  // |F - T| <= tolerance * T
+};
+
+// The crossing between `a` and `b`, whose field values `fa` and `fb` lie on opposite sides of T
+// (one >= T, the other < T). The Illinois variant of regula falsi: it keeps the bracket (so the
+// point stays on the edge, which is what keeps the mesh free of self-intersections) and
+// converges superlinearly on smooth fields. At a jump of the field (a truncated kernel) it
+// shrinks the bracket onto the jump and reports not converged.
+// The answer stays a hair inside the edge, so it never coincides with a lattice point that
+// other edges' vertices could also sit on.
+EdgeRoot find_edge_root(const std::function<field::FieldSample(const Vec3&)>& field, const Vec3& a,
+                        double fa, const Vec3& b, double fb, double threshold, double tolerance);
+
+}  // namespace convray::polygonize
