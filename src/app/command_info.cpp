@@ -31,7 +31,9 @@ void print_topology(const mesh::MeshStats& stats, std::ostream& out) {
   out << "boundary edges: " << stats.boundary_edges << "\n"
       << "non-manifold edges: " << stats.non_manifold_edges << "\n"
       << "inconsistently oriented edges: " << stats.inconsistent_edges << "\n"
-      << "connected components: " << stats.connected_components << "\n";
+      << "connected components: " << stats.connected_components << "\n"
+      << "Euler characteristic: " << stats.euler_characteristic()
+      << " (V - E + F; 2 per closed sphere-like component, 2 less per handle)\n";
 }
 
 // The advice of mesh::advised_radius, with its two ingredients.
