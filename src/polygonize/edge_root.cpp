@@ -5,8 +5,9 @@
 
 namespace convray::polygonize {
 
-EdgeRoot find_edge_root(const std::function<field::FieldSample(const Vec3&)>& field, const Vec3& a,
-                        double fa, const Vec3& b, double fb, double threshold, double tolerance) {
+EdgeRoot find_edge_root(const FieldSource& source, const Vec3& a, double fa, const Vec3& b,
+                        double fb, double tolerance) {
+  const double threshold = source.threshold;
   constexpr double kEdgeMargin = 1e-9;  // of the edge's length
   constexpr int kMaxSteps = 100;
   const double tolerance_abs = tolerance * threshold;
@@ -21,12 +22,11 @@ EdgeRoot find_edge_root(const std::function<field::FieldSample(const Vec3&)>& fi
     if (!(t > lo && t < hi)) t = 0.5 * (t0 + t1);
     t = std::clamp(t, kEdgeMargin, 1.0 - kEdgeMargin);
     root.position = a + t * (b - a);
-    root.sample = field(root.position);
+    const double g = source.value_at(root.position) - threshold;
     ++root.evaluations;
-    const double g = root.sample.value - threshold;
     if (std::abs(g) <= tolerance_abs) {
       root.converged = true;
-      return root;
+      break;
     }
     if (std::abs(t1 - t0) <= 4e-16 * std::max(1.0, std::abs(t))) break;  // a jump: give up
     if ((g < 0.0) == (g1 < 0.0)) {
@@ -38,6 +38,8 @@ EdgeRoot find_edge_root(const std::function<field::FieldSample(const Vec3&)>& fi
     t1 = t;
     g1 = g;
   }
+  root.sample = source.field(root.position);
+  ++root.evaluations;
   return root;
 }
 

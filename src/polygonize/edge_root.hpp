@@ -1,8 +1,7 @@
 #pragma once
 // The point where the surface F = T crosses one lattice edge, found on the exact field.
-#include <functional>
-
 #include "field/sample.hpp"
+#include "polygonize/field_source.hpp"
 #include "util/math.hpp"
 
 namespace convray::polygonize {
@@ -20,8 +19,9 @@ struct EdgeRoot {
 // converges superlinearly on smooth fields. At a jump of the field (a truncated kernel) it
 // shrinks the bracket onto the jump and reports not converged.
 // The answer stays a hair inside the edge, so it never coincides with a lattice point that
-// other edges' vertices could also sit on.
-EdgeRoot find_edge_root(const std::function<field::FieldSample(const Vec3&)>& field, const Vec3& a,
-                        double fa, const Vec3& b, double fb, double threshold, double tolerance);
+// other edges' vertices could also sit on. The search reads F alone (FieldSource::value_at);
+// the gradient is evaluated once, at the answer.
+EdgeRoot find_edge_root(const FieldSource& source, const Vec3& a, double fa, const Vec3& b,
+                        double fb, double tolerance);
 
 }  // namespace convray::polygonize

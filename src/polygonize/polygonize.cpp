@@ -156,8 +156,8 @@ SurfaceMesh polygonize(const FieldSource& source, const PolygonizeOptions& optio
   std::vector<double> residuals(edges.size());
   tbb::parallel_for(size_t(0), edges.size(), [&](size_t v) {
     const auto [a, b] = edge_ends(grid, edges[v].key);
-    const EdgeRoot root = find_edge_root(source.field, a, edges[v].f_low, b, edges[v].f_high,
-                                         source.threshold, options.tolerance);
+    const EdgeRoot root =
+        find_edge_root(source, a, edges[v].f_low, b, edges[v].f_high, options.tolerance);
     result.soup.vertices[v] = root.position;
     const double length = glm::length(root.sample.gradient);
     result.normals[v] = length > 0.0 ? -root.sample.gradient / length : Vec3(0.0);
