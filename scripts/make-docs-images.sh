@@ -41,6 +41,8 @@ if command -v povray >/dev/null && [ -d /usr/share/povray-3.7/scenes/objects ]; 
     cp out/compare-docs/${name}_povray.png out/compare-docs/${name}_convray.png $out/povray/
   done
 fi
+# Polygonized surfaces rendered as meshes (docs/polygonization.md).
+bash scripts/make-polygonize-images.sh
 # The animations' first, middle and last frames (docs/animations.md).
 bash scripts/make-animation-images.sh
 echo "pictures written to $out/"
