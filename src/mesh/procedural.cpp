@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 namespace convray::mesh {
@@ -63,6 +64,79 @@ Triangle make_fin(TriangleSoup& soup, size_t t) {
   double height = glm::length(soup.vertices[b] - soup.vertices[a]);
   uint32_t apex = add_vertex(soup, edge_middle + height * glm::normalize(edge_middle));
   return {a, b, apex};
+}
+
+// Builds a soup whose vertices are welded as they are added: the tiles of repair_soup share
+// their borders by position, and each shared position becomes one index.
+class WeldingBuilder {
+ public:
+  uint32_t vertex(const Vec3& p) {
+    auto [it, inserted] =
+        index_.try_emplace({p.x, p.y, p.z}, static_cast<uint32_t>(soup_.vertices.size()));
+    if (inserted) soup_.vertices.push_back(p);
+    return it->second;
+  }
+  TriangleSoup& soup() { return soup_; }
+
+ private:
+  TriangleSoup soup_;
+  std::map<std::array<double, 3>, uint32_t> index_;
+};
+
+// Point `along` (0..1) of the way around the border of the square of half size h centred at
+// c, counter-clockwise from its corner (h, -h); `spokes` points per turn, so spokes / 4 per
+// side. Each coordinate is computed from the index counted from the side's low end, so two
+// tiles compute their shared side's points bit for bit alike.
+Vec3 square_point(const Vec3& c, double h, int spoke, int spokes) {
+  const int per_side = spokes / 4, side = spoke / per_side, j = spoke % per_side;
+  auto at = [h, per_side](int from_low) { return -h + 2.0 * h * from_low / per_side; };
+  switch (side) {
+    case 0:
+      return c + Vec3(h, at(j), 0.0);
+    case 1:
+      return c + Vec3(at(per_side - j), h, 0.0);
+    case 2:
+      return c + Vec3(-h, at(per_side - j), 0.0);
+    default:
+      return c + Vec3(at(j), -h, 0.0);
+  }
+}
+
+// One tile of repair_soup: rings of quads from the hole's polygon (radius hole_radius; a
+// point when it is 0, where the first ring becomes a fan) out to the square border. The
+// spoke from hole corner i runs straight to border point i. Appends the triangles ring by
+// ring from the inside out, spoke by spoke within a ring: two per quad, one per fan triangle.
+void add_tile(WeldingBuilder& builder, const Vec3& centre, double hole_radius, int spokes,
+              int rings) {
+  auto point = [&](int ring, int spoke) {
+    spoke %= spokes;
+    double angle = -kPi / 4.0 + 2.0 * kPi * spoke / spokes;
+    Vec3 inner = centre + hole_radius * Vec3(std::cos(angle), std::sin(angle), 0.0);
+    if (ring == 0) return builder.vertex(inner);
+    if (ring == rings) return builder.vertex(square_point(centre, 1.0, spoke, spokes));
+    double t = static_cast<double>(ring) / rings;
+    return builder.vertex((1.0 - t) * inner + t * square_point(centre, 1.0, spoke, spokes));
+  };
+  std::vector<Triangle>& out = builder.soup().triangles;
+  for (int ring = 0; ring < rings; ++ring) {
+    for (int i = 0; i < spokes; ++i) {
+      if (ring == 0 && hole_radius == 0.0) {
+        out.push_back({point(0, 0), point(1, i), point(1, i + 1)});
+        continue;
+      }
+      // Counter-clockwise from +z: outwards along spoke i, then round to spoke i + 1.
+      out.push_back({point(ring, i), point(ring + 1, i), point(ring + 1, i + 1)});
+      out.push_back({point(ring, i), point(ring + 1, i + 1), point(ring, i + 1)});
+    }
+  }
+}
+
+// A triangle standing straight up (+z) on the first edge of triangle t, as tall as the edge.
+Triangle make_upright_fin(TriangleSoup& soup, size_t t) {
+  auto [a, b, c] = soup.triangles[t];
+  Vec3 edge_middle = 0.5 * (soup.vertices[a] + soup.vertices[b]);
+  double height = glm::length(soup.vertices[b] - soup.vertices[a]);
+  return {a, b, add_vertex(soup, edge_middle + Vec3(0.0, 0.0, height))};
 }
 
 }  // namespace
@@ -158,6 +232,67 @@ TriangleSoup defective_soup(const SoupDefects& defects) {
     Triangle near_duplicate = soup.triangles[duplicated];
     triangles.push_back({near_duplicate[0], near_duplicate[0], near_duplicate[1]});
   }
+  soup.triangles = std::move(triangles);
+  return soup;
+}
+
+TriangleSoup repair_soup(const RepairDefects& defects) {
+  const int n = defects.spokes, k = defects.rings;
+  const int defect_count =
+      defects.flipped + defects.duplicated + defects.slivers + (defects.fin ? 1 : 0);
+  if (n < 16 || n % 8 != 0 || k < 4 || defect_count > 8) {
+    throw std::invalid_argument(
+        "repair_soup: spokes must be a multiple of 8 (>= 16), rings >= 4, defects <= 8");
+  }
+  for (double a : defects.hole_radii) {
+    if (!(a > 0.0 && a < 1.0))
+      throw std::invalid_argument("repair_soup: hole radii must lie in (0, 1)");
+  }
+  WeldingBuilder builder;
+  add_tile(builder, {-1.0, 1.0, 0.0}, defects.hole_radii[0], n, k);
+  add_tile(builder, {1.0, 1.0, 0.0}, defects.hole_radii[1], n, k);
+  add_tile(builder, {-1.0, -1.0, 0.0}, defects.hole_radii[2], n, k);
+  const size_t solid_first = builder.soup().size();
+  add_tile(builder, {1.0, -1.0, 0.0}, 0.0, n, k);
+  TriangleSoup soup = std::move(builder.soup());
+
+  // Defect d goes on the first triangle of the quad at spoke d * n / 8 of the solid tile's
+  // middle ring: eight spokes apart at the least, no two share a vertex, and none touches
+  // the fan or the tile's border.
+  const int middle = k / 2;
+  auto defect_triangle = [&](int d) {
+    return solid_first + static_cast<size_t>(n + 2 * n * (middle - 1) + 2 * (d * n / 8));
+  };
+  enum class Defect { kNone, kFlipped, kDuplicated, kSliver, kFin };
+  std::vector<Defect> defect(soup.size(), Defect::kNone);
+  int d = 0;
+  for (int i = 0; i < defects.flipped; ++i) defect[defect_triangle(d++)] = Defect::kFlipped;
+  for (int i = 0; i < defects.duplicated; ++i) defect[defect_triangle(d++)] = Defect::kDuplicated;
+  for (int i = 0; i < defects.slivers; ++i) defect[defect_triangle(d++)] = Defect::kSliver;
+  if (defects.fin) defect[defect_triangle(d++)] = Defect::kFin;
+
+  std::vector<Triangle> triangles, appended;  // copies and fins go at the end, as a soup has them
+  for (size_t t = 0; t < soup.size(); ++t) {
+    Triangle tri = soup.triangles[t];
+    switch (defect[t]) {
+      case Defect::kFlipped:
+        std::swap(tri[1], tri[2]);
+        break;
+      case Defect::kDuplicated:
+        appended.push_back(tri);
+        break;
+      case Defect::kSliver:
+        add_sliver(soup, t, triangles);
+        continue;
+      case Defect::kFin:
+        appended.push_back(make_upright_fin(soup, t));
+        break;
+      case Defect::kNone:
+        break;
+    }
+    triangles.push_back(tri);
+  }
+  triangles.insert(triangles.end(), appended.begin(), appended.end());
   soup.triangles = std::move(triangles);
   return soup;
 }
