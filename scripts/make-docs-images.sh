@@ -43,6 +43,8 @@ if command -v povray >/dev/null && [ -d /usr/share/povray-3.7/scenes/objects ]; 
 fi
 # Polygonized surfaces rendered as meshes (docs/polygonization.md).
 bash scripts/make-polygonize-images.sh
+# The two kernels on one triangle and on the soup (docs/kernels.md: the paper's Fig. 6 and 9).
+bash scripts/make-kernel-images.sh
 # Repairs: holes closing on the repair soup, the bunny's outer shell (docs/repair.md).
 bash scripts/make-repair-images.sh
 # The animations' first, middle and last frames (docs/animations.md).

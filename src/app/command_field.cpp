@@ -8,11 +8,13 @@
 #include <istream>
 #include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include "app/declared_object.hpp"
 #include "app/soup_triangles.hpp"
+#include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_field.hpp"
 #include "mesh/load.hpp"
@@ -114,17 +116,27 @@ int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, 
   parse_options.library_paths = o.library_paths;
   const sdl::ParseResult parsed = sdl::parse_file(o.scene_path, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.scene_path, o.object_name);
-  const implicit::ConvolutionSurface surface(std::get<scene::Implicit>(object.shape).object);
+  const implicit::ConvolutionObject& record = std::get<scene::Implicit>(object.shape).object;
   const scene::Transform& placed = object.transform;
   // F_world(p) = F(M^-1 p), so grad F_world = M^-T grad F: the normal rule of
   // the transform.
-  return answer_points(
-      [&](const Vec3& p) {
-        field::FieldSample s = surface.field(placed.inverse_point(p));
-        s.gradient = placed.normal(s.gradient);
-        return s;
-      },
-      in, out, err);
+  const auto answer = [&](const auto& surface) {
+    return answer_points(
+        [&](const Vec3& p) {
+          field::FieldSample s = surface.field(placed.inverse_point(p));
+          s.gradient = placed.normal(s.gradient);
+          return s;
+        },
+        in, out, err);
+  };
+  try {
+    if (record.kernel.type == implicit::KernelType::cauchy) {
+      return answer(implicit::CauchySurface(record));
+    }
+  } catch (const std::invalid_argument& e) {
+    throw InputError(object.loc, e.what());
+  }
+  return answer(implicit::ConvolutionSurface(record));
 }
 
 }  // namespace

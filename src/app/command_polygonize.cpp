@@ -10,6 +10,7 @@
 
 #include "app/declared_object.hpp"
 #include "app/soup_triangles.hpp"
+#include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_field.hpp"
 #include "implicit/threshold.hpp"
@@ -70,6 +71,22 @@ double smallest_radius(const implicit::ConvolutionObject& object) {
   return r;
 }
 
+// The field of `surface` placed by `placed`: F_world(p) = F(M^-1 p), so grad F_world =
+// M^-T grad F; its support boxes are placed with it.
+template <typename Surface>
+void place_field(PreparedField& prepared, std::shared_ptr<const Surface> surface,
+                 const std::vector<Box3>& supports, const scene::Transform& placed) {
+  for (const Box3& box : supports) {
+    prepared.source.supports.push_back(polygonize::transform_box(placed.forward(), box));
+  }
+  prepared.source.field = [surface, placed](const Vec3& p) {
+    field::FieldSample s = surface->field(placed.inverse_point(p));
+    s.gradient = placed.normal(s.gradient);
+    return s;
+  };
+  prepared.owner = surface;
+}
+
 // A declared object, placed by its transform: the mesh comes out where the scene puts it.
 PreparedField prepare_scene(const PolygonizeOptions& o) {
   sdl::ParseOptions parse_options;
@@ -87,17 +104,20 @@ PreparedField prepare_scene(const PolygonizeOptions& o) {
   prepared.source.threshold = o.threshold.value_or(convolution.threshold);
   const scene::Transform placed = object.transform;
   if (placed.is_similarity(1e-9)) prepared.radius *= placed.uniform_scale();
-  for (const Box3& box : polygonize::support_boxes(convolution)) {
-    prepared.source.supports.push_back(polygonize::transform_box(placed.forward(), box));
+  if (convolution.kernel.type == implicit::KernelType::cauchy) {
+    // McCormack and Sherstyuk's kernel, truncated per primitive by its box: the field jumps
+    // at the boxes' faces, where no vertex can meet |F - T| <= 1e-6 T (reported).
+    std::shared_ptr<const implicit::CauchySurface> surface;
+    try {
+      surface = std::make_shared<const implicit::CauchySurface>(convolution);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(object.loc, e.what());
+    }
+    place_field(prepared, surface, surface->support_boxes(), placed);
+  } else {
+    place_field(prepared, std::make_shared<const implicit::ConvolutionSurface>(convolution),
+                polygonize::support_boxes(convolution), placed);
   }
-  auto surface = std::make_shared<implicit::ConvolutionSurface>(convolution);
-  // F_world(p) = F(M^-1 p), so grad F_world = M^-T grad F.
-  prepared.source.field = [surface, placed](const Vec3& p) {
-    field::FieldSample s = surface->field(placed.inverse_point(p));
-    s.gradient = placed.normal(s.gradient);
-    return s;
-  };
-  prepared.owner = surface;
   return prepared;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "geometry/box.hpp"
+#include "geometry/cauchy_shape.hpp"
 #include "geometry/cone.hpp"
 #include "geometry/csg.hpp"
 #include "geometry/disc.hpp"
@@ -138,6 +139,9 @@ ShapePtr ShapeBuilder::make(const scene::TriangleMesh& m, const Inherited& own) 
 }
 
 ShapePtr ShapeBuilder::make(const scene::Implicit& i, const Inherited& own) const {
+  if (i.object.kernel.type == implicit::KernelType::cauchy) {
+    return std::make_unique<CauchyShape>(i, surface_for(own));
+  }
   return std::make_unique<ImplicitShape>(i, surface_for(own), cache_);
 }
 

@@ -66,6 +66,17 @@ struct BlobCylinderComponent {
   Weight weight;
 };
 
+// The kernel the skeleton is convolved with. quartic: the paper's (1 - r^2/R^2)^2 with finite
+// support R (ConvolutionSurface). cauchy: McCormack and Sherstyuk's 1 / (1 + s^2 r^2)^2, each
+// primitive's field cut to zero outside its bounding box grown by its radius, which then is
+// the truncation margin (CauchySurface, implicit/cauchy_surface.hpp).
+enum class KernelType { quartic, cauchy };
+struct Kernel {
+  KernelType type = KernelType::quartic;
+  double sharpness = 1.0;  // cauchy: s (> 0); the kernel falls to 1/4 at r = 1/s
+  bool operator==(const Kernel&) const = default;
+};
+
 struct ConvolutionObject {
   std::vector<MeshComponent> meshes;
   std::vector<SegmentComponent> segments;
@@ -74,6 +85,7 @@ struct ConvolutionObject {
   std::vector<BlobSphereComponent> blob_spheres;
   std::vector<BlobCylinderComponent> blob_cylinders;
   double threshold = 1.0;  // the surface is F = T; inside is F >= T
+  Kernel kernel;
 };
 
 }  // namespace convray::implicit

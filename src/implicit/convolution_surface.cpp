@@ -141,8 +141,19 @@ double ConvolutionSurface::Impl::expected_supports_per_line() const {
   return area > 0.0 ? 4.0 * shadows / area : 0.0;
 }
 
+namespace {
+// This class is the quartic kernel's; `kernel cauchy` objects are CauchySurface's.
+const ConvolutionObject& require_quartic(const ConvolutionObject& object) {
+  if (object.kernel.type != KernelType::quartic) {
+    throw std::invalid_argument("ConvolutionSurface traces the quartic kernel only; use "
+                                "CauchySurface for kernel cauchy");
+  }
+  return object;
+}
+}  // namespace
+
 ConvolutionSurface::ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache)
-    : impl_(std::make_unique<Impl>(object, cache)) {}
+    : impl_(std::make_unique<Impl>(require_quartic(object), cache)) {}
 ConvolutionSurface::~ConvolutionSurface() = default;
 ConvolutionSurface::ConvolutionSurface(ConvolutionSurface&&) noexcept = default;
 ConvolutionSurface& ConvolutionSurface::operator=(ConvolutionSurface&&) noexcept = default;

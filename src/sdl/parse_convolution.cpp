@@ -5,6 +5,9 @@
 //     strength 1      // default strength s (default 1)
 //     offset 0.4      // the surface lies this far from flat parts: T = threshold_for_offset
 //     threshold 0.8   // or T itself; neither given: offset = R / 2
+//     kernel quartic  // the default; or `kernel cauchy [s]` (McCormack and Sherstyuk's
+//                     // 1/(1 + s^2 r^2)^2, s > 0, default 1; radius is then the margin of
+//                     // each primitive's truncation box)
 //     mesh { "model.ply" [strength s] [radius r] [transforms] [texture] }
 //     triangle { <a>, <b>, <c> [strength s] [radius r] ... }
 //     segment { <a>, <b> ... }
@@ -12,6 +15,9 @@
 //     point { <c> ... }
 //     [object modifiers]
 //   }
+#include <cmath>
+
+#include "field/cauchy.hpp"
 #include "implicit/threshold.hpp"
 #include "sdl/convolution_components.hpp"
 #include "sdl/item_parsers.hpp"
@@ -27,7 +33,28 @@ struct ConvolutionSettings {
   std::optional<SourceLoc> strength_loc;
   std::optional<double> offset, threshold;
   SourceLoc offset_loc, threshold_loc;
+  implicit::Kernel kernel;
 };
+
+// After `kernel`: `quartic`, or `cauchy` with an optional sharpness s > 0.
+void parse_kernel(Parser& parser, implicit::Kernel& kernel) {
+  if (accept_word(parser, "quartic")) {
+    kernel = {};
+  } else if (accept_word(parser, "cauchy")) {
+    kernel.type = implicit::KernelType::cauchy;
+    kernel.sharpness = 1.0;
+    if (at_float_start(parser)) {
+      const SourceLoc loc = parser.peek().loc;
+      kernel.sharpness = float_param(parser, "the cauchy kernel's sharpness s");
+      if (!(kernel.sharpness > 0.0 && std::isfinite(kernel.sharpness))) {
+        parser.fail(loc, "kernel cauchy: the sharpness s must be positive, found " +
+                             number_text(kernel.sharpness));
+      }
+    }
+  } else {
+    parser.fail_here("kernel must be quartic or cauchy, found '" + parser.peek().text + "'");
+  }
+}
 
 // Parses `radius`, `strength`, `offset` or `threshold` if the next token is one of them.
 bool parse_setting(Parser& parser, ConvolutionSettings& settings) {
@@ -38,6 +65,9 @@ bool parse_setting(Parser& parser, ConvolutionSettings& settings) {
       parser.fail(loc, "convolution radius must be positive, found " +
                            number_text(settings.defaults.radius));
     }
+  } else if (at_word(parser, "kernel")) {
+    take_keyword(parser);
+    parse_kernel(parser, settings.kernel);
   } else if (at_word(parser, "strength")) {
     settings.strength_loc = take_keyword(parser);
     settings.defaults.strength = float_param(parser, "strength");
@@ -73,7 +103,11 @@ double resolve_threshold(Parser& parser, const SourceLoc& loc,
                 "(offset " +
                     number_text(offset) + ", radius " + number_text(d.radius) + ")");
   }
-  const double threshold = implicit::threshold_for_offset(d.strength, d.radius, offset);
+  // The plane's field at distance `offset`, under the object's kernel.
+  const double threshold =
+      settings.kernel.type == implicit::KernelType::cauchy
+          ? d.strength * field::cauchy_plane_value(offset, settings.kernel.sharpness)
+          : implicit::threshold_for_offset(d.strength, d.radius, offset);
   if (!(threshold > 0.0)) {
     parser.fail(settings.strength_loc.value_or(loc),
                 "convolution: a threshold from the offset needs a positive strength (found " +
@@ -94,8 +128,9 @@ scene::ObjectPtr parse_convolution(Parser& parser) {
 
   ConvolutionSettings settings;
   std::vector<PendingComponent> components;
-  static constexpr std::string_view kOwn[] = {"radius",   "strength", "offset", "threshold", "mesh",
-                                              "triangle", "segment",  "arc",    "point"};
+  static constexpr std::string_view kOwn[] = {"radius",  "strength", "offset",
+                                              "threshold", "kernel", "mesh",
+                                              "triangle", "segment", "arc", "point"};
   while (block.more()) {
     if (at_convolution_component(parser)) {
       if (builder.modified()) builder.fail_after_modifiers("the convolution's components");
@@ -107,7 +142,16 @@ scene::ObjectPtr parse_convolution(Parser& parser) {
   if (components.empty()) {
     parser.fail(loc, "convolution has no components (mesh, triangle, segment, arc, point)");
   }
+  if (settings.kernel.type == implicit::KernelType::cauchy) {
+    for (const PendingComponent& component : components) {
+      if (component.kind == scene::Implicit::Kind::arc) {
+        parser.fail(component.loc,
+                    "kernel cauchy supports points, segments and triangles (meshes), not arcs");
+      }
+    }
+  }
   auto& implicit = std::get<scene::Implicit>(builder.object().shape);
+  implicit.object.kernel = settings.kernel;
   implicit.object.threshold = resolve_threshold(parser, loc, settings);
   resolve_components(components, settings.defaults, implicit);
   return builder.build();

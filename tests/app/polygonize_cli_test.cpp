@@ -1,5 +1,6 @@
 // `convray polygonize`, run as a user runs it; `convray info` on its output confirms the mesh is
 // closed and 2-manifold, as the issue asks.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -93,6 +94,25 @@ TEST_F(PolygonizeCommand, SceneObjectComesOutWhereTheScenePlacesIt) {
   ASSERT_FALSE(out.soup.vertices.empty());
   for (const Vec3& p : out.soup.vertices) {
     EXPECT_NEAR(glm::length(p - Vec3(5.0, 0.0, 0.0)), radius, 1e-6);
+  }
+}
+
+TEST_F(PolygonizeCommand, CauchyPointTruncatedByItsBoxGivesTheBox) {
+  // kernel cauchy 1 on a point: 1/(1 + r^2)^2 = 0.05 at r = 1.86, far outside the truncation
+  // box (the point grown by 0.5), so F >= T fills the whole box and jumps to 0 at its faces:
+  // the surface is the cube of half-size 0.5, closed, every vertex on a face.
+  std::ofstream(file("c.pov")) << "#declare C = convolution {\n  kernel cauchy 1\n"
+                                  "  radius 0.5\n  threshold 0.05\n  point { <1, 2, 3> }\n}\n";
+  const testing::CliRun run = run_convray("polygonize '" + file("c.pov") +
+                                          "' --object C --cell 0.1 -o '" + file("c.obj") + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.all();
+  EXPECT_NE(run.out.find("boundary edges 0, non-manifold edges 0"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("at jumps of the field"), std::string::npos) << run.out;
+  const mesh::LoadedMesh out = mesh::load_mesh(file("c.obj"));
+  ASSERT_FALSE(out.soup.vertices.empty());
+  for (const Vec3& p : out.soup.vertices) {
+    const Vec3 d = glm::abs(p - Vec3(1.0, 2.0, 3.0));
+    EXPECT_NEAR(std::max({d.x, d.y, d.z}), 0.5, 1e-9);
   }
 }
 
