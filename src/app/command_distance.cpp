@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "app/short_number.hpp"
 #include "mesh/distance.hpp"
 #include "mesh/load.hpp"
 #include "util/error.hpp"
@@ -9,12 +10,7 @@
 namespace convray::app {
 namespace {
 
-// Six significant digits, as `convray info` prints.
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
+std::string number(double value) { return short_number(value, 6); }
 
 // "0.0123 (0.00061 of the diagonal)"
 std::string length(double value, double diagonal) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/short_number.hpp"
 #include "mesh/load.hpp"
 #include "mesh/stats.hpp"
 #include "util/error.hpp"
@@ -10,12 +11,7 @@
 namespace convray::app {
 namespace {
 
-// Six significant digits: enough to compare sizes, short enough to read.
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
+std::string number(double value) { return short_number(value, 6); }
 
 std::string triple(const Vec3& v) { return number(v.x) + " " + number(v.y) + " " + number(v.z); }
 
@@ -41,13 +37,14 @@ void print_radius_advice(const mesh::MeshStats& stats, std::ostream& out) {
   Vec3 size = stats.bounds.extent();
   double largest = std::max({size.x, size.y, size.z});
   double start = mesh::advised_radius(stats);
-  out << "radius advice: start with R = " << number(start) << " (the smaller of the mean edge length, "
-      << number(stats.mean_edge_length) << ", and a tenth of the largest dimension, " << number(largest)
+  out << "radius advice: start with R = " << number(start)
+      << " (the smaller of the mean edge length, " << number(stats.mean_edge_length)
+      << ", and a tenth of the largest dimension, " << number(largest)
       << "); larger radii blur the shape\n";
 }
 
-void print_report(const std::string& path, const mesh::LoadedMesh& mesh, const mesh::MeshStats& stats,
-                  std::ostream& out) {
+void print_report(const std::string& path, const mesh::LoadedMesh& mesh,
+                  const mesh::MeshStats& stats, std::ostream& out) {
   out << "file: " << path << "\n"
       << "format: " << mesh.format << "\n"
       << "triangles: " << stats.triangles << "\n"

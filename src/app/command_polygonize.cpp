@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "app/declared_object.hpp"
+#include "app/short_number.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
@@ -176,11 +177,7 @@ Extraction extract(const PreparedField& prepared, const PolygonizeOptions& o, st
   return result;
 }
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
+std::string number(double value) { return short_number(value, 4); }
 
 void report(const Extraction& e, const mesh::MeshStats& topology, size_t shells_kept,
             const PolygonizeOptions& o, double seconds, std::ostream& out) {

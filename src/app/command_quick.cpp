@@ -8,6 +8,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "app/short_number.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/threshold.hpp"
@@ -30,12 +31,7 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Six significant digits: enough to compare, short enough to read.
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
+std::string number(double value) { return short_number(value, 6); }
 
 const SourceLoc kCommandLine{"command line"};
 

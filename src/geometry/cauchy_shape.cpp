@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/first_open_crossing.hpp"
 #include "implicit/ray_box.hpp"
 
 namespace convray::geometry {
@@ -60,16 +61,7 @@ void CauchyShape::crossings(const Ray& ray, double tmin, double tmax, std::vecto
 
 std::optional<Crossing> CauchyShape::first_crossing(const Ray& ray, double tmin, double tmax,
                                                     TraceStats& stats) const {
-  double t0 = tmin, t1 = tmax;
-  if (!implicit::clip_to_box(ray, surface_.bounds(), t0, t1)) return std::nullopt;
-  const auto hit = surface_.first_hit(ray, t0, t1, stats);
-  if (!hit) return std::nullopt;
-  if (hit->t > tmin && hit->t < tmax) return Crossing{hit->t, hit->normal, surface_at(hit->point)};
-  // A crossing on an end of the closed interval: the open one wants the next.
-  std::vector<Crossing> all;
-  crossings(ray, tmin, tmax, all, stats);
-  if (all.empty()) return std::nullopt;
-  return all.front();
+  return first_open_crossing(*this, surface_, ray, tmin, tmax, stats);
 }
 
 bool CauchyShape::inside(const Vec3& p) const {

@@ -10,6 +10,7 @@
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
 #include "geometry/bounds.hpp"
+#include "geometry/first_open_crossing.hpp"
 
 namespace convray::geometry {
 
@@ -118,16 +119,7 @@ void ImplicitShape::crossings(const Ray& ray, double tmin, double tmax, std::vec
 
 std::optional<Crossing> ImplicitShape::first_crossing(const Ray& ray, double tmin, double tmax,
                                                       TraceStats& stats) const {
-  double t0 = tmin, t1 = tmax;
-  if (!clip_to_box(ray, surface_.bounds(), t0, t1)) return std::nullopt;
-  const auto hit = surface_.first_hit(ray, t0, t1, stats);
-  if (!hit) return std::nullopt;
-  if (hit->t > tmin && hit->t < tmax) return Crossing{hit->t, hit->normal, surface_at(hit->point)};
-  // A root on an end of the closed interval the surface searched: the open one wants the next.
-  std::vector<Crossing> all;
-  crossings(ray, tmin, tmax, all, stats);
-  if (all.empty()) return std::nullopt;
-  return all.front();
+  return first_open_crossing(*this, surface_, ray, tmin, tmax, stats);
 }
 
 bool ImplicitShape::inside(const Vec3& p) const {
