@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -25,8 +26,7 @@ bool contains(const Box3& outer, const Box3& inner) {
          outer.hi.x >= inner.hi.x && outer.hi.y >= inner.hi.y && outer.hi.z >= inner.hi.z;
 }
 
-std::vector<Shell> make_shells(const mesh::TriangleSoup& soup) {
-  std::vector<uint32_t> component;
+std::vector<Shell> make_shells(const mesh::TriangleSoup& soup, std::vector<uint32_t>& component) {
   std::vector<Shell> shells(triangle_components(soup, component));
   for (size_t t = 0; t < soup.triangles.size(); ++t) {
     Shell& shell = shells[component[t]];
@@ -77,7 +77,8 @@ double winding_number(const mesh::TriangleSoup& soup, const std::vector<uint32_t
 }
 
 size_t keep_outer_shells(SurfaceMesh& mesh) {
-  const std::vector<Shell> shells = make_shells(mesh.soup);
+  std::vector<uint32_t> component;  // per triangle
+  const std::vector<Shell> shells = make_shells(mesh.soup, component);
   std::vector<char> keep(shells.size(), 0);
   tbb::parallel_for(size_t(0), shells.size(), [&](size_t k) {
     const Shell& shell = shells[k];
@@ -91,8 +92,6 @@ size_t keep_outer_shells(SurfaceMesh& mesh) {
   });
 
   // Rebuild the mesh from the kept shells, vertices renumbered in their old order.
-  std::vector<uint32_t> component;
-  triangle_components(mesh.soup, component);
   SurfaceMesh kept;
   std::vector<uint32_t> new_index(mesh.soup.vertices.size(), UINT32_MAX);
   std::vector<mesh::Triangle> triangles;
