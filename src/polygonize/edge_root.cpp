@@ -38,8 +38,22 @@ EdgeRoot find_edge_root(const FieldSource& source, const Vec3& a, double fa, con
     t1 = t;
     g1 = g;
   }
-  root.sample = source.field(root.position);
-  ++root.evaluations;
+  // The search may have read a fast approximation of F (FieldSource::value); the vertex must
+  // sit on the exact field, so a few Newton steps along the edge finish on `field` itself.
+  const Vec3 edge = b - a;
+  constexpr int kPolishSteps = 4;
+  for (int step = 0;; ++step) {
+    root.sample = source.field(root.position);
+    ++root.evaluations;
+    const double g = root.sample.value - threshold;
+    root.converged = std::abs(g) <= tolerance_abs;
+    const double slope = glm::dot(root.sample.gradient, edge);
+    if (root.converged || step == kPolishSteps || !(slope != 0.0)) break;
+    const double next = std::clamp(t - g / slope, kEdgeMargin, 1.0 - kEdgeMargin);
+    if (!(std::abs(next - t) <= 1e-3)) break;  // far off: a jump, not rounding
+    t = next;
+    root.position = a + t * edge;
+  }
   return root;
 }
 

@@ -19,8 +19,9 @@ struct EdgeRoot {
 // converges superlinearly on smooth fields. At a jump of the field (a truncated kernel) it
 // shrinks the bracket onto the jump and reports not converged.
 // The answer stays a hair inside the edge, so it never coincides with a lattice point that
-// other edges' vertices could also sit on. The search reads F alone (FieldSource::value_at);
-// the gradient is evaluated once, at the answer.
+// other edges' vertices could also sit on. The search reads F alone (FieldSource::value_at,
+// which may be a fast approximation); Newton steps along the edge on FieldSource::field then
+// put the answer on the exact field, whose gradient gives the normal.
 EdgeRoot find_edge_root(const FieldSource& source, const Vec3& a, double fa, const Vec3& b,
                         double fb, double tolerance);
 
