@@ -14,13 +14,16 @@ namespace convray::polygonize {
 BlockGrid::BlockGrid(const Box3& bounds, double cell) : cell_(cell) {
   if (!(cell > 0.0) || !std::isfinite(cell)) throw std::invalid_argument("the cell must be > 0");
   if (bounds.empty()) throw std::invalid_argument("nothing to polygonize: the field is zero");
-  // Two cells of margin: the outermost lattice points are then outside every support.
-  origin_ = bounds.lo - Vec3(2.0 * cell);
+  // Two cells of margin: the outermost lattice points are then outside every support. The
+  // origin is also shifted by irrational-looking fractions of a cell, different per axis, so
+  // that flat parts of a model aligned with its bounds (a sheet, a box's faces) do not put
+  // their surface exactly through lattice points, where vertices would crowd into slivers.
+  origin_ = bounds.lo - cell * Vec3(2.0 + 0.3819660113, 2.0 + 0.2763932022, 2.0 + 0.1458980338);
   const Vec3 extent = bounds.hi - bounds.lo;
   int64_t* point_counts[3] = {&points_.i, &points_.j, &points_.k};
   int64_t* block_counts[3] = {&blocks_.i, &blocks_.j, &blocks_.k};
   for (int axis = 0; axis < 3; ++axis) {
-    const double cells = std::ceil(extent[axis] / cell) + 4.0;
+    const double cells = std::ceil(extent[axis] / cell) + 5.0;
     const double blocks = std::ceil(cells / kBlockCells);
     if (!(blocks * kBlockCells + 1.0 <= double(kMaxPointsPerAxis))) {
       std::ostringstream message;
