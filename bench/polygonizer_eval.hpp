@@ -42,7 +42,7 @@ struct Quality {
   size_t components = 0;
   long euler = 0;
   size_t degenerate_triangles = 0;
-  size_t self_intersecting_pairs = 0;  // pairs of triangles with no common vertex that meet
+  size_t self_intersecting_pairs = 0;  // pairs of faces meeting beyond shared corners (exact)
   double max_field_error = 0.0;        // max over vertices of |F - T| / T
   double mean_field_error = 0.0;
   double min_angle_degrees = 0.0;
@@ -57,12 +57,5 @@ struct Quality {
 
 // Measures `mesh` against the problem's surface. Runs on the TBB threads allowed.
 Quality measure_quality(const Problem& problem, const mesh::TriangleSoup& mesh);
-
-// The number of pairs of triangles of `mesh` that share no vertex (by welded position) and
-// intersect (touching counts), found through a uniform grid over the triangles' boxes.
-size_t count_self_intersections(const mesh::TriangleSoup& mesh);
-
-// Möller's triangle-triangle test (1997), doubles, with the coplanar case.
-bool triangles_intersect(const Vec3 a[3], const Vec3 b[3]);
 
 }  // namespace convray::bench

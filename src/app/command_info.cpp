@@ -5,6 +5,7 @@
 
 #include "app/short_number.hpp"
 #include "mesh/load.hpp"
+#include "mesh/self_intersections.hpp"
 #include "mesh/stats.hpp"
 #include "util/error.hpp"
 
@@ -58,12 +59,27 @@ void print_report(const std::string& path, const mesh::LoadedMesh& mesh,
   print_radius_advice(stats, out);
 }
 
+// Face numbers count from 1, in the order the faces were read (after triangulation).
+void print_self_intersections(const mesh::TriangleSoup& soup, std::ostream& out) {
+  const mesh::SelfIntersections found = mesh::find_self_intersections(soup, 5);
+  out << "self-intersecting face pairs: " << found.pairs
+      << " (faces meeting beyond their shared corners, exact arithmetic)\n";
+  if (found.flat_faces > 0) {
+    out << "flat faces not checked: " << found.flat_faces << " (collinear corners)\n";
+  }
+  for (const auto& pair : found.examples) {
+    out << "  faces " << pair[0] + 1 << " and " << pair[1] + 1 << " intersect\n";
+  }
+}
+
 }  // namespace
 
-int run_info(const std::string& path, std::ostream& out, std::ostream& err) {
+int run_info(const std::string& path, bool self_intersections, std::ostream& out,
+             std::ostream& err) {
   try {
     mesh::LoadedMesh mesh = mesh::load_mesh(path);
     print_report(path, mesh, mesh::compute_stats(mesh.soup), out);
+    if (self_intersections) print_self_intersections(mesh.soup, out);
     return 0;
   } catch (const InputError& error) {
     err << error.what() << "\n";

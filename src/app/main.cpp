@@ -298,11 +298,16 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
 
   std::string info_path;
+  bool info_self_intersections = false;
   CLI::App* info = app.add_subcommand(
       "info", "Report a mesh: triangles, vertices, dropped faces, bounds, edge statistics, "
               "components; what to check before choosing a radius.");
   info->add_option("MESH", info_path, "mesh file: .obj .ply .stl .off, optionally .gz")
       ->required();
+  info->add_flag("--self-intersections", info_self_intersections,
+                 "also count the pairs of faces that intersect beyond their shared corners, "
+                 "in exact arithmetic, and list the first five (about a second per million "
+                 "faces on two cores)");
 
   convray::app::FieldOptions field_options;
   CLI::App* field = app.add_subcommand(
@@ -382,7 +387,9 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (*info) return convray::app::run_info(info_path, std::cout, std::cerr);
+  if (*info) {
+    return convray::app::run_info(info_path, info_self_intersections, std::cout, std::cerr);
+  }
   if (*slice) return convray::app::run_slice(slice_options, std::cout, std::cerr);
   if (*quick) return convray::app::run_quick(quick_arguments.options, std::cout, std::cerr);
   if (*field) return convray::app::run_field(field_options, std::cin, std::cout, std::cerr);

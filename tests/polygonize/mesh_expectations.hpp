@@ -4,6 +4,7 @@
 // triangles do.
 #include <gtest/gtest.h>
 
+#include "mesh/self_intersections.hpp"
 #include "mesh/stats.hpp"
 #include "polygonize/polygonize.hpp"
 #include "reference/mesh_checks.hpp"
@@ -18,8 +19,9 @@ inline reference::IndexedMesh indexed(const mesh::TriangleSoup& soup) {
 }
 
 // Checks the topology and returns the statistics for further checks. Self-intersections are
-// counted by brute force, so only for meshes up to `max_checked` triangles.
-inline mesh::MeshStats expect_closed_manifold(const SurfaceMesh& m, size_t max_checked = 40000) {
+// decided exactly (mesh/self_intersections.hpp, itself checked against an integer separating
+// axis test and a search of every pair): touching counts, a gap of one ulp does not.
+inline mesh::MeshStats expect_closed_manifold(const SurfaceMesh& m) {
   const mesh::MeshStats stats = mesh::compute_stats(m.soup);
   EXPECT_GT(stats.triangles, 0u);
   EXPECT_EQ(stats.boundary_edges, 0u);
@@ -40,9 +42,9 @@ inline mesh::MeshStats expect_closed_manifold(const SurfaceMesh& m, size_t max_c
     agreeing += glm::dot(face, n) > 0.0;
   }
   EXPECT_GE(double(agreeing), 0.995 * double(m.soup.triangles.size()));
-  if (m.soup.triangles.size() <= max_checked) {
-    EXPECT_EQ(reference::count_self_intersections(indexed(m.soup)), 0u);
-  }
+  const mesh::SelfIntersections crossings = mesh::find_self_intersections(m.soup);
+  EXPECT_EQ(crossings.pairs, 0u);
+  EXPECT_EQ(crossings.flat_faces, 0u);
   return stats;
 }
 
