@@ -85,16 +85,21 @@ TEST(TriangleContact, SegmentMeetsTriangleAgreesWithSeparatingAxes) {
   EXPECT_GT(meeting, 2000);
 }
 
+// Points of the shared-corner tests below, in integers scaled by K: a itself, and the point
+// 1/K of the way from a to d.
+constexpr int64_t K = int64_t(1) << 16;
+
+IntPoint scaled(const IntPoint& p) { return {p.x * K, p.y * K, p.z * K}; }
+
+IntPoint toward(const IntPoint& a, const IntPoint& d) {  // K a + (d - a)
+  return {a.x * K + d.x - a.x, a.y * K + d.y - a.y, a.z * K + d.z - a.z};
+}
+
 // Faces sharing corner a meet elsewhere exactly when p meets q with a small neighbourhood of a
 // cut off: q' = hull(a + (d - a)/K, a + (e - a)/K, d, e). In integers, everything is scaled by
 // K; K = 2^16 is far beyond the denominators of the common points of lattice triangles this
 // small, so no common point other than a hides inside the cut.
 TEST(TriangleContact, FacesSharingOneCornerAgreeWithSeparatingAxes) {
-  constexpr int64_t K = int64_t(1) << 16;
-  auto scaled = [](const IntPoint& p) { return IntPoint{p.x * K, p.y * K, p.z * K}; };
-  auto toward = [](const IntPoint& a, const IntPoint& d) {  // K a + (d - a)
-    return IntPoint{a.x * K + d.x - a.x, a.y * K + d.y - a.y, a.z * K + d.z - a.z};
-  };
   LatticeTriangles lattice(9);
   int tested = 0, meeting = 0;
   while (tested < 10000) {
@@ -122,11 +127,6 @@ TEST(TriangleContact, FacesSharingOneCornerAgreeWithSeparatingAxes) {
 // Faces sharing edge (a, b) overlap beyond it exactly when p meets the part of q at least 1/K
 // away from that edge (barycentric weight of q's third corner d at least 1/K).
 TEST(TriangleContact, FacesSharingAnEdgeAgreeWithSeparatingAxes) {
-  constexpr int64_t K = int64_t(1) << 16;
-  auto scaled = [](const IntPoint& p) { return IntPoint{p.x * K, p.y * K, p.z * K}; };
-  auto toward = [](const IntPoint& a, const IntPoint& d) {
-    return IntPoint{a.x * K + d.x - a.x, a.y * K + d.y - a.y, a.z * K + d.z - a.z};
-  };
   LatticeTriangles lattice(13);
   int tested = 0, meeting = 0;
   while (tested < 10000) {
