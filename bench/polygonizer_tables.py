@@ -47,8 +47,8 @@ def read(directory, name):
             header = cells(line)
         elif line.startswith("|") and not line.startswith("|---") and header:
             rows.append(dict(zip(header, cells(line))))
-        elif line.startswith("- "):
-            notes.append(line.rstrip())
+        elif line.startswith("- ") and not line.startswith("- ours: mesh read from"):
+            notes.append(line.rstrip())  # (ours gets its own note: the time is the command's)
         elif line.startswith(("TIMEOUT", "FAILED")):
             failures.append(line.rstrip())
     return rows, notes, failures
