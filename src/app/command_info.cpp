@@ -59,7 +59,8 @@ void print_report(const std::string& path, const mesh::LoadedMesh& mesh,
   print_radius_advice(stats, out);
 }
 
-// Face numbers count from 1, in the order the faces were read (after triangulation).
+// Faces are numbered from 1 in file order among the triangles kept (polygons split into fans,
+// degenerate faces dropped: the report's 'polygons triangulated' and 'dropped faces').
 void print_self_intersections(const mesh::TriangleSoup& soup, std::ostream& out) {
   const mesh::SelfIntersections found = mesh::find_self_intersections(soup, 5);
   out << "self-intersecting face pairs: " << found.pairs

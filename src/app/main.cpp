@@ -306,8 +306,8 @@ int main(int argc, char** argv) {
       ->required();
   info->add_flag("--self-intersections", info_self_intersections,
                  "also count the pairs of faces that intersect beyond their shared corners, "
-                 "in exact arithmetic, and list the first five (about a second per million "
-                 "faces on two cores)");
+                 "in exact arithmetic, and list the first five (faces numbered from 1 among "
+                 "the triangles kept; under a second per million faces on two cores)");
 
   convray::app::FieldOptions field_options;
   CLI::App* field = app.add_subcommand(
