@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/printable.hpp"
+
 namespace convray {
 
 struct SourceLoc {
@@ -20,10 +22,14 @@ struct SourceLoc {
 };
 
 // An error caused by the user's input (scene, mesh, command line): reported, never a crash.
+// Its text is made printable (util/printable.hpp): what it quotes from the input reaches the
+// terminal with control characters escaped and long tokens cut.
 class InputError : public std::runtime_error {
  public:
   InputError(SourceLoc loc, const std::string& message)
-      : std::runtime_error(loc.str() + ": " + message), loc_(std::move(loc)), message_(message) {}
+      : std::runtime_error(printable(loc.str() + ": " + message)),
+        loc_(std::move(loc)),
+        message_(printable(message)) {}
 
   const SourceLoc& loc() const { return loc_; }
   const std::string& message() const { return message_; }
