@@ -20,6 +20,7 @@
 #include "mesh/load.hpp"
 #include "sdl/parser.hpp"
 #include "util/error.hpp"
+#include "util/printable.hpp"
 
 namespace convray::app {
 
@@ -102,7 +103,8 @@ int answer_points(const FieldFunction& field, std::istream& in, std::ostream& ou
     for (const std::string& a : answers) out << a;
     if (problem) {
       out.flush();
-      err << "stdin:" << line_number + good + 1 << ": " << *problem << "\n";
+      // The line is the user's text: escaped and cut before it reaches the terminal.
+      err << "stdin:" << line_number + good + 1 << ": " << printable(*problem) << "\n";
       return 2;
     }
     line_number += lines.size();
@@ -114,6 +116,7 @@ int answer_points(const FieldFunction& field, std::istream& in, std::ostream& ou
 int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
   sdl::ParseOptions parse_options;
   parse_options.library_paths = o.library_paths;
+  parse_options.read_folders = o.read_folders;
   const sdl::ParseResult parsed = sdl::parse_file(o.scene_path, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.scene_path, o.object_name);
   const implicit::ConvolutionObject& record = std::get<scene::Implicit>(object.shape).object;

@@ -14,6 +14,7 @@ struct FieldOptions {
   std::string scene_path;
   std::string object_name;
   std::vector<std::string> library_paths;  // for the scene's #include and mesh files
+  std::vector<std::string> read_folders;   // --allow-read: more folders the scene may read
 };
 
 // `convray field`: reads "x y z" lines from `in`, writes "F dF/dx dF/dy dF/dz" lines with 17

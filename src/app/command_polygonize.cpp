@@ -23,6 +23,7 @@
 #include "polygonize/surface_error.hpp"
 #include "render/progress.hpp"
 #include "sdl/parser.hpp"
+#include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
 namespace convray::app {
@@ -94,6 +95,7 @@ void place_field(PreparedField& prepared, std::shared_ptr<const Surface> surface
 PreparedField prepare_scene(const PolygonizeOptions& o) {
   sdl::ParseOptions parse_options;
   parse_options.library_paths = o.library_paths;
+  parse_options.read_folders = o.read_folders;
   const sdl::ParseResult parsed = sdl::parse_file(o.input, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.input, o.object_name);
   const implicit::ConvolutionObject& convolution = std::get<scene::Implicit>(object.shape).object;
@@ -214,6 +216,7 @@ int run_polygonize(const PolygonizeOptions& o, std::ostream& out, std::ostream& 
     if (mesh::format_from_name(o.output).gzip) {
       throw InputError(kCommandLine, "cannot write .gz meshes: " + o.output);
     }
+    check_writable_destination(o.output, "the mesh");
     const PreparedField prepared = o.object_name.empty() ? prepare_mesh(o) : prepare_scene(o);
     Extraction e = extract(prepared, o, err);
     size_t shells_kept = 0;

@@ -12,6 +12,7 @@ struct PolygonizeOptions {
   std::string input;                       // a mesh file, or a scene file with object_name
   std::string object_name;                 // --object NAME: the declared object of the scene
   std::vector<std::string> library_paths;  // -L, for the scene's includes and meshes
+  std::vector<std::string> read_folders;   // --allow-read: more folders the scene may read
   std::optional<double> radius;            // meshes: R (default: the advised radius)
   double strength = 1.0;                   // meshes
   std::optional<double> fit_box;           // meshes: scale the largest extent to this first

@@ -54,6 +54,9 @@ sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame,
   p.initial_clock = frame.initial_clock;
   p.final_clock = frame.final_clock;
   p.library_paths = o.library_paths;
+  p.read_folders = o.read_folders;
+  p.read_folders.push_back(std::filesystem::path(o.output).parent_path().string());
+  p.read_anywhere = o.read_anywhere;
   p.declares = o.declares;
   return p;
 }

@@ -1,5 +1,6 @@
 // convray command line: parse the arguments, hand each subcommand to its run_* function.
 #include <charconv>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -229,6 +230,8 @@ CLI::App* add_polygonize_command(CLI::App& app, convray::app::PolygonizeOptions&
                   "scene, placed by its transforms");
   cmd->add_option("-L,--library", p.library_paths,
                   "also search this folder for the scene's #include and mesh files");
+  cmd->add_option("--allow-read", p.read_folders,
+                  "also let the scene read files in this folder (POV-Ray's I/O restrictions)");
   cmd->add_option("--radius", p.radius, "meshes: kernel radius R (default: the advised "
                   "radius of 'convray info')")->check(kPositive);
   cmd->add_option("--strength", p.strength, "meshes: strength s (default 1)")->check(kPositive);
@@ -286,6 +289,9 @@ void check_field_options(const convray::app::FieldOptions& o, const CLI::App& fi
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) then fails the write with EFBIG, which the atomic writer
+  // reports and cleans up, instead of killing the process mid-file.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (argc >= 2) {
     const std::string first = argv[1];
     if (!is_command(first) && first != "-h" && first != "--help" && first != "--version") {
@@ -320,6 +326,8 @@ int main(int argc, char** argv) {
   field->add_option("--object", field_options.object_name, "the declared object of SCENE");
   field->add_option("-L,--library", field_options.library_paths,
                     "also search this folder for the scene's #include and mesh files");
+  field->add_option("--allow-read", field_options.read_folders,
+                    "also let the scene read files in this folder (POV-Ray's I/O restrictions)");
   field->add_option("--mesh", field_options.mesh_path, "mesh file");
   field->add_option("--radius", field_options.radius,
                     "kernel radius R (support of the kernel), with --mesh")

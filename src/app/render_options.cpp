@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <filesystem>
 #include <string_view>
 
 #include "app/frame_names.hpp"
@@ -30,6 +31,10 @@ const char* const kRenderUsage =
     "Scene:\n"
     "  -L, --library DIR   also search DIR for #include files and meshes (+LDIR)\n"
     "  --declare ID=VALUE  declare a float identifier (Declare=ID=VALUE)\n"
+    "  --allow-read DIR    also let the scene read files in DIR (by default only in the\n"
+    "                      scene's folder, the working folder, -L folders, POV-Ray's\n"
+    "                      includes and the output folder, as POV-Ray's I/O restrictions)\n"
+    "  --allow-read-anywhere   lift that restriction\n"
     "  --clock VALUE       a still's clock (+KVALUE; default 0)\n"
     "Animation (POV-Ray's options; frames are named OUTPUT plus the zero-padded number):\n"
     "  --initial-frame N   +KFIN (default 1)      --final-frame N   +KFFN (default 1)\n"
@@ -212,6 +217,10 @@ bool apply_long_option(RenderOptions& o, const std::vector<std::string>& args, s
     o.threads = int(whole(option_value(args, i, name), name, 1, 1024));
   } else if (name == "-L" || name == "--library") {
     o.library_paths.push_back(option_value(args, i, name));
+  } else if (name == "--allow-read") {
+    o.read_folders.push_back(option_value(args, i, name));
+  } else if (name == "--allow-read-anywhere") {
+    o.read_anywhere = true;
   } else if (name == "--declare") {
     set_declare(o, option_value(args, i, name), name);
   } else if (name == "--stats") {
@@ -446,6 +455,20 @@ void apply_switch(RenderOptions& o, const std::string& arg) {
   }
 }
 
+// `-o /dev/full` names a device, not an image to write beside it as /dev/full.png, which is
+// what adding POV-Ray's extension would do.
+static void refuse_special_output(const std::string& output) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(output, error);
+  if (error || !std::filesystem::exists(status) || std::filesystem::is_directory(status) ||
+      std::filesystem::is_regular_file(status)) {
+    return;
+  }
+  throw UsageError("-o " + output +
+                   ": not a regular file (a device, pipe or socket); convray writes images "
+                   "only to regular files");
+}
+
 RenderOptions parse_render_arguments(const std::vector<std::string>& args) {
   RenderOptions o;
   bool positional_scene = false;
@@ -474,6 +497,7 @@ RenderOptions parse_render_arguments(const std::vector<std::string>& args) {
         "no scene file given (convray SCENE.pov, +ISCENE.pov, or Input_File_Name= "
         "in an INI file)");
   }
+  refuse_special_output(o.output);
   o.output_is_folder = names_folder(o.output);
   o.output = resolve_output(o.output, o.scene);
   plan_frames(o.animation);  // bad frame options are usage errors, found before any work

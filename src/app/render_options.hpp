@@ -27,6 +27,8 @@ struct RenderOptions {
   double jitter_amount = 1.0;
   int threads = 0;                                       // +WT n; 0: every core
   std::vector<std::string> library_paths;                // +L path
+  std::vector<std::string> read_folders;                 // --allow-read DIR
+  bool read_anywhere = false;                            // --allow-read-anywhere
   std::vector<std::pair<std::string, double>> declares;  // Declare=ID=value
   AnimationOptions animation;   // +K +KFI +KFF +KI +KF +KC +SF +EF, Frame_Step
   bool continue_trace = false;  // +C: skip frames whose files are already complete

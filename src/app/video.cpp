@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "app/option_values.hpp"
+#include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
 extern char** environ;
@@ -96,6 +97,7 @@ void check_video_tools(const std::string& video) {
                      "--video: give the file an extension (.mp4, .webm, .gif, ...) so "
                      "that ffmpeg knows the format");
   }
+  check_writable_destination(video, "the video");
 }
 
 void assemble_video(const std::vector<std::string>& frames, const std::string& video, double fps) {
@@ -109,9 +111,9 @@ void assemble_video(const std::vector<std::string>& frames, const std::string& v
     std::snprintf(name, sizeof name, "%06zu", i);
     fs::create_symlink(fs::absolute(frames[i]), links.path() / (name + extension));
   }
-  const fs::path target(video);
-  const fs::path partial = target.parent_path() / ("." + target.stem().string() + ".partial" +
-                                                   target.extension().string());
+  // ffmpeg opens its output by name: it writes inside a private folder beside the video,
+  // which is renamed into place only when ffmpeg succeeded (util/atomic_file.hpp).
+  AtomicFileByName file(video, "the video", "video" + fs::path(video).extension().string());
   std::vector<std::string> command = {"ffmpeg",
                                       "-nostdin",
                                       "-y",
@@ -122,17 +124,13 @@ void assemble_video(const std::vector<std::string>& frames, const std::string& v
                                       "-i",
                                       (links.path() / ("%06d" + extension)).string()};
   for (const std::string& a : codec_arguments(video)) command.push_back(a);
-  command.push_back(partial.string());
+  command.push_back(file.path().string());
   const int status = run_program(command);
-  std::error_code error;
-  if (status == 0) fs::rename(partial, target, error);
-  if (status != 0 || error) {
-    std::error_code ignored;
-    fs::remove(partial, ignored);
-    throw InputError({video}, status != 0 ? "ffmpeg failed (exit status " + std::to_string(status) +
-                                                "); its message is above"
-                                          : "cannot rename the video: " + error.message());
+  if (status != 0) {
+    throw InputError({video}, "ffmpeg failed (exit status " + std::to_string(status) +
+                                  "); its message is above");
   }
+  file.commit();
 }
 
 }  // namespace convray::app

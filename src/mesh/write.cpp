@@ -1,8 +1,5 @@
 #include "mesh/write.hpp"
 
-#include <unistd.h>
-
-#include <atomic>
 #include <cerrno>
 #include <cstdint>
 #include <bit>
@@ -14,14 +11,15 @@
 
 #include "mesh/format.hpp"
 #include "mesh/load_error.hpp"
+#include "util/atomic_file.hpp"
 
 namespace convray::mesh {
 namespace {
 
-// Collects output in memory and hands it to stdio in large pieces.
+// Collects output in memory and hands it to the atomic file in large pieces.
 class Output {
  public:
-  explicit Output(std::FILE* file) : file_(file) {}
+  explicit Output(AtomicFile& file) : file_(file) {}
 
   void text(std::string_view s) {
     buffer_.append(s);
@@ -45,21 +43,18 @@ class Output {
     buffer_.append(bytes, sizeof(T));
     flush_if_full();
   }
-  bool finish() {
-    flush();
-    return !std::ferror(file_);
-  }
+  void finish() { flush(); }
 
  private:
   void flush_if_full() {
     if (buffer_.size() >= (size_t{1} << 20)) flush();
   }
   void flush() {
-    if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), file_);
+    if (!buffer_.empty()) file_.write(buffer_);
     buffer_.clear();
   }
 
-  std::FILE* file_;
+  AtomicFile& file_;
   std::string buffer_;
 };
 
@@ -220,12 +215,6 @@ bool is_binary(MeshFormat format, MeshEncoding encoding, const std::string& path
   return encoding != MeshEncoding::Ascii;
 }
 
-// Unique within the process and, through the pid, across processes writing the same path.
-std::string temporary_path(const std::string& path) {
-  static std::atomic<unsigned> counter{0};
-  return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
-}
-
 }  // namespace
 
 void save_mesh(const TriangleSoup& soup, const std::string& path, MeshEncoding encoding,
@@ -238,22 +227,11 @@ void save_mesh(const TriangleSoup& soup, const std::string& path, MeshEncoding e
   if (format.format == MeshFormat::Stl && soup.size() > UINT32_MAX)
     fail(path, "too many triangles for STL, which counts them in 32 bits");
 
-  std::string temporary = temporary_path(path);
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (!file) fail(path, std::string("cannot create ") + temporary + ": " + std::strerror(errno));
+  AtomicFile file(path, "the mesh");
   Output out(file);
   write_format(soup, vertex_normals, format.format, binary, out);
-  bool written = out.finish();
-  bool closed = std::fclose(file) == 0;
-  if (!written || !closed) {
-    std::remove(temporary.c_str());
-    fail(path, std::string("cannot write the file: ") + std::strerror(errno));
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    int error = errno;
-    std::remove(temporary.c_str());
-    fail(path, std::string("cannot rename the finished file into place: ") + std::strerror(error));
-  }
+  out.finish();
+  file.commit();
 }
 
 }  // namespace convray::mesh

@@ -1,8 +1,6 @@
 #include "render/image_file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -12,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
 namespace convray::render {
@@ -33,23 +32,6 @@ std::string lower_extension(const fs::path& path) {
 OIIO::TypeDesc stored_type(const ImageFormat& format) {
   if (format.floating) return OIIO::TypeDesc::FLOAT;
   return format.bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
-}
-
-// `.NAME.partial.EXT` next to NAME.EXT: hidden, and keeping the extension, so that
-// OpenImageIO picks the same writer for it.
-// Asks the kernel to put the file's bytes on the disk (best effort: a failure only loses the
-// guarantee across a power cut, never the file).
-void flush_to_disk(const fs::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
-fs::path partial_path_for(const fs::path& target) {
-  std::string name = ".";
-  name.append(target.stem().string()).append(".partial").append(target.extension().string());
-  return target.parent_path() / name;
 }
 
 // The values handed to OpenImageIO: sRGB-encoded where an integer format stores linear light.
@@ -88,15 +70,7 @@ ImageFormat image_format_for(const std::string& path) {
 
 void check_image_destination(const std::string& path) {
   image_format_for(path);
-  const fs::path folder = fs::path(path).parent_path();
-  std::error_code error;
-  if (!folder.empty() && !fs::is_directory(folder, error)) {
-    throw InputError({path},
-                     "cannot write the image: folder '" + folder.string() + "' does not exist");
-  }
-  if (fs::is_directory(fs::path(path), error)) {
-    throw InputError({path}, "cannot write the image: a folder of that name exists");
-  }
+  check_writable_destination(path, "the image");
 }
 
 bool image_file_is_complete(const std::string& path, int width, int height) {
@@ -117,40 +91,74 @@ bool image_file_is_complete(const std::string& path, int width, int height) {
   return whole;
 }
 
-void write_image_atomically(const std::string& path, const ImagePixels& pixels) {
-  const ImageFormat format = image_format_for(path);
-  if (pixels.width < 1 || pixels.height < 1 ||
-      pixels.rgb.size() != 3 * size_t(pixels.width) * size_t(pixels.height)) {
-    throw std::invalid_argument("write_image_atomically: pixel count does not match the size");
-  }
-  const std::vector<float> values = encoded_for(format, pixels);
-  const fs::path target(path);
-  const fs::path partial = partial_path_for(target);
+namespace {
 
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+OIIO::ImageSpec spec_for(const ImageFormat& format, const ImagePixels& pixels) {
   OIIO::ImageSpec spec(pixels.width, pixels.height, 3, stored_type(format));
   if (format.floating) {
     spec.attribute("oiio:ColorSpace", "Linear");
   } else if (pixels.encoding == PixelEncoding::linear) {
     spec.attribute("oiio:ColorSpace", "sRGB");  // what encoded_for made of it
   }
-  const bool written = out && out->open(partial.string(), spec) &&
+  return spec;
+}
+
+// The encoded file in memory, for PNG (every render's default): the bytes then reach the
+// disk through AtomicFile, every write checked. Empty for other formats: OpenImageIO 2.4's
+// TIFF writer, for one, claims an I/O proxy but writes a file without its image length.
+std::vector<unsigned char> encode_in_memory(const std::string& path, const ImageFormat& format,
+                                            const ImagePixels& pixels,
+                                            const std::vector<float>& values) {
+  std::vector<unsigned char> bytes;
+  if (format.extension != "png") return bytes;
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+  if (!out || !out->supports("ioproxy")) return bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  const bool written = out->set_ioproxy(&memory) && out->open(path, spec_for(format, pixels)) &&
+                       out->write_image(OIIO::TypeDesc::FLOAT, values.data()) && out->close();
+  if (!written) {
+    const std::string problem = out->geterror();
+    throw InputError({path}, "cannot write the image: " +
+                                 (problem.empty() ? std::string("the encoder failed") : problem));
+  }
+  return bytes;
+}
+
+// Writers that open the file by name write into a private folder; the result is read back
+// whole before it replaces anything, since such a writer may not report a full disk.
+void write_by_name(const std::string& path, const ImageFormat& format, const ImagePixels& pixels,
+                   const std::vector<float>& values) {
+  AtomicFileByName file(path, "the image", "image." + format.extension);
+  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+  const bool written = out && out->open(file.path().string(), spec_for(format, pixels)) &&
                        out->write_image(OIIO::TypeDesc::FLOAT, values.data()) && out->close();
   std::string problem = written ? "" : (out ? out->geterror() : OIIO::geterror());
-  out.reset();  // closes the partial file, if still open, before it is removed
+  out.reset();
+  if (written && !image_file_is_complete(file.path().string(), pixels.width, pixels.height)) {
+    problem = "the file written does not read back whole (is the disk full?)";
+  }
+  if (!problem.empty() || !written) {
+    throw InputError({path}, "cannot write the image: " +
+                                 (problem.empty() ? "the writer gave no reason" : problem));
+  }
+  file.commit();
+}
 
-  std::error_code error;
-  if (written) {
-    flush_to_disk(partial);  // a crash after the rename must not leave an empty "complete" file
-    fs::rename(partial, target, error);
-    if (error) problem = error.message();
+}  // namespace
+
+void write_image_atomically(const std::string& path, const ImagePixels& pixels) {
+  const ImageFormat format = image_format_for(path);
+  if (pixels.width < 1 || pixels.height < 1 ||
+      pixels.rgb.size() != 3 * size_t(pixels.width) * size_t(pixels.height)) {
+    throw std::invalid_argument("write_image_atomically: pixel count does not match the size");
   }
-  if (!written || error) {
-    std::error_code ignored;
-    fs::remove(partial, ignored);
-    if (problem.empty()) problem = "the writer gave no reason";
-    throw InputError({path}, "cannot write the image: " + problem);
-  }
+  check_writable_destination(path, "the image");
+  const std::vector<float> values = encoded_for(format, pixels);
+  const std::vector<unsigned char> bytes = encode_in_memory(path, format, pixels, values);
+  if (bytes.empty()) return write_by_name(path, format, pixels, values);
+  write_file_atomically(
+      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+      "the image");
 }
 
 }  // namespace convray::render

@@ -11,9 +11,9 @@
 // them. Pictures whose values are already meant for display (`convray slice`'s colour ramp)
 // say PixelEncoding::display and are stored as they are.
 //
-// The file appears complete or not at all: the pixels go to `.NAME.partial.EXT` in the same
-// folder, which is renamed over NAME.EXT once closed (a rename within one file system is
-// atomic), and removed on any failure. A render interrupted before writing leaves nothing.
+// The file appears complete or not at all (util/atomic_file.hpp): the encoded bytes go to a
+// fresh temporary beside NAME.EXT, every write checked, which is renamed over NAME.EXT once
+// synced, and removed on any failure (a full disk, a kill), leaving the previous file intact.
 #include <span>
 #include <string>
 

@@ -7,6 +7,7 @@
 #include "sdl/diagnostics.hpp"
 #include "sdl/items.hpp"
 #include "sdl/parser_impl.hpp"
+#include "util/printable.hpp"
 
 namespace convray::sdl {
 namespace {
@@ -215,7 +216,9 @@ void Parser::Impl::directive_message(Word kind, TokenRef at) {
   if (kind == Word::warning) {
     warn(loc(at), text);
   } else {
-    warnings.push_back(loc(at).str() + ": #" + std::string(at.token->view()) + ": " + text);
+    // Scene text reaches the terminal escaped (no raw escape sequences), long runs cut.
+    warnings.push_back(
+        printable(loc(at).str() + ": #" + std::string(at.token->view()) + ": " + text));
   }
 }
 

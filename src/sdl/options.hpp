@@ -22,6 +22,11 @@ struct ParseOptions {
   std::vector<std::string> library_paths;
   // Where POV-Ray's include files are installed, searched last when the folder exists.
   std::vector<std::string> system_include_paths{"/usr/share/povray-3.7/include"};
+  // POV-Ray's I/O restrictions: a scene reads files (includes, meshes, file_exists) only from
+  // its own folder, the working folder, library_paths, system_include_paths and these folders,
+  // each with everything below it (util/read_permissions.hpp); or from anywhere.
+  std::vector<std::string> read_folders;
+  bool read_anywhere = false;
   // Declare=ID=value from the command line: float values.
   std::vector<std::pair<std::string, double>> declares;
   // Runaway scenes stop with an error at these limits.

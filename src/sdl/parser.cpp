@@ -2,6 +2,7 @@
 // the parse shares: files, messages, include search.
 #include "sdl/parser.hpp"
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,6 +10,7 @@
 #include "sdl/diagnostics.hpp"
 #include "sdl/items.hpp"
 #include "sdl/parser_impl.hpp"
+#include "util/printable.hpp"
 
 namespace convray::sdl {
 namespace {
@@ -23,6 +25,18 @@ bool read_file(const std::string& path, std::string& text) {
   contents << stream.rdbuf();
   text = std::move(contents).str();
   return !stream.bad();
+}
+
+std::string describe_file_kind(const std::filesystem::file_status& status) {
+  namespace fs = std::filesystem;
+  switch (status.type()) {
+    case fs::file_type::directory: return "a folder";
+    case fs::file_type::fifo: return "a named pipe";
+    case fs::file_type::character: return "a character device";
+    case fs::file_type::block: return "a block device";
+    case fs::file_type::socket: return "a socket";
+    default: return "not a regular file";
+  }
 }
 
 }  // namespace
@@ -46,7 +60,7 @@ void Parser::Impl::warn(const SourceLoc& at, const std::string& message) {
   const std::string text = file == files_by_name.end()
                                ? message
                                : with_source_line(message, file->second->text, at.line, at.column);
-  warnings.push_back(at.str() + ": " + text);
+  warnings.push_back(printable(at.str() + ": " + text));
 }
 
 void Parser::Impl::enter_nesting() {
@@ -74,7 +88,23 @@ std::string Parser::Impl::resolve(const std::string& name, const SourceLoc& at,
   }
   for (const fs::path& folder : folders) {
     const fs::path candidate = folder.empty() ? given : folder / given;
-    if (fs::is_regular_file(candidate, error)) return candidate.lexically_normal().string();
+    const fs::file_status status = fs::status(candidate, error);
+    if (error.value() == ELOOP) {
+      if (!must_exist) return {};
+      fail(at, "cannot read '" + name + "': " + candidate.string() +
+                   " is a loop of symbolic links");
+    }
+    if (!fs::exists(status)) continue;
+    if (!readable.allows(candidate.string())) {
+      if (!must_exist) return {};  // file_exists() says no, as for a missing file
+      fail(at, "cannot read '" + name + "': it is outside the folders a scene may read (" +
+                   allowed_folders_text() +
+                   "; POV-Ray's I/O restrictions); convray --allow-read FOLDER widens them");
+    }
+    if (fs::is_regular_file(status)) return candidate.lexically_normal().string();
+    if (!must_exist) return {};
+    fail(at, "cannot read '" + name + "': " + candidate.string() + " is " +
+                 describe_file_kind(status) + ", not a file");
   }
   if (!must_exist) return {};
   std::string searched;
@@ -83,6 +113,25 @@ std::string Parser::Impl::resolve(const std::string& name, const SourceLoc& at,
     searched += folder.empty() ? std::string(".") : folder.string();
   }
   fail(at, "file not found: '" + name + "' (searched " + searched + ")");
+}
+
+std::string Parser::Impl::allowed_folders_text() const {
+  std::string text = "the scene's folder, the working folder, +L library paths, POV-Ray's "
+                     "include folder and the output folder: ";
+  const std::vector<std::string>& folders = readable.folders();
+  for (size_t i = 0; i < folders.size(); ++i) text += (i ? ", " : "") + folders[i];
+  return text;
+}
+
+void Parser::Impl::allow_reads_for(const std::string& scene_name) {
+  if (options.read_anywhere) readable.allow_anywhere();
+  readable.allow(std::filesystem::path(scene_name).parent_path().string());
+  readable.allow(".");
+  for (const std::string& folder : options.library_paths) readable.allow(folder);
+  for (const std::string& folder : options.system_include_paths) {
+    readable.allow_with_links(folder);
+  }
+  for (const std::string& folder : options.read_folders) readable.allow(folder);
 }
 
 const SourceFile& Parser::Impl::load_file(const std::string& path, const SourceLoc& at) {
@@ -106,6 +155,7 @@ Parser::Parser(std::string file_name, std::string text, ParseOptions options)
     : impl_(std::make_unique<Impl>(*this, std::move(options))) {
   std::unique_ptr<SourceFile> file = tokenize(std::move(file_name), std::move(text));
   Impl& impl = *impl_;
+  impl.allow_reads_for(file->name);
   impl.warnings = std::move(file->warnings);
   file->warnings.clear();
   impl.files_by_name.emplace(file->name, file.get());

@@ -32,6 +32,7 @@
 
 #include "sdl/lexer.hpp"
 #include "sdl/parser.hpp"
+#include "util/read_permissions.hpp"
 
 namespace convray::sdl {
 
@@ -123,6 +124,7 @@ struct Parser::Impl {
 
   Parser& owner;
   ParseOptions options;
+  ReadPermissions readable;  // the folders files may be read from (POV-Ray's I/O restrictions)
   Defaults defaults;
   std::vector<std::unique_ptr<SourceFile>> files;
   NameMap<const SourceFile*> files_by_name;  // tokenized once, by resolved path
@@ -203,6 +205,8 @@ struct Parser::Impl {
   void warn(const SourceLoc& at, const std::string& message);
   const SourceFile& load_file(const std::string& path, const SourceLoc& requested_at);
   std::string resolve(const std::string& name, const SourceLoc& at, bool must_exist) const;
+  void allow_reads_for(const std::string& scene_name);
+  std::string allowed_folders_text() const;
   void enter_nesting();
   void leave_nesting() { --nesting_depth; }
 

@@ -114,7 +114,8 @@ TEST(ItemsConvolution, MeshFromAnObjFile) {
   const auto folder = write_square("convray_items_mesh_test");
   const std::string path = (folder / "square.obj").string();
   const auto& c = convolution_of(
-      parse("convolution { radius 0.5 mesh { \"" + path + "\" strength 2 scale 2 } }"));
+      parse("convolution { radius 0.5 mesh { \"" + path + "\" strength 2 scale 2 } }",
+            reading_from(folder.string())));
   ASSERT_EQ(c.object.meshes.size(), 1u);
   const implicit::MeshComponent& mesh = c.object.meshes[0];
   ASSERT_EQ(mesh.triangles.size(), 2u);
@@ -144,7 +145,8 @@ TEST(ItemsConvolution, MeshLoadErrorsPointAtTheMeshKeyword) {
   std::filesystem::create_directories(folder);
   std::ofstream(folder / "bad.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
   const std::string bad = (folder / "bad.obj").string();
-  const ParseFailure failure = parse_error("convolution {\n  mesh { \"" + bad + "\" } }");
+  const ParseFailure failure =
+      parse_error("convolution {\n  mesh { \"" + bad + "\" } }", reading_from(folder.string()));
   EXPECT_EQ(failure.loc.line, 2);
   EXPECT_EQ(failure.loc.column, 3);
   EXPECT_NE(failure.message.find("cannot load mesh"), std::string::npos) << failure.message;

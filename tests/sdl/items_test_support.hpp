@@ -10,8 +10,16 @@
 
 namespace convray::sdl::testing {
 
-inline ParseResult parse(const std::string& text) {
-  return parse_string(text, "test.pov", ParseOptions{});
+inline ParseResult parse(const std::string& text, const ParseOptions& options = {}) {
+  return parse_string(text, "test.pov", options);
+}
+
+// Options that let a scene read the files a test wrote into `folder` (a scene reads only
+// from the allowed folders: docs/files.md).
+inline ParseOptions reading_from(const std::string& folder) {
+  ParseOptions options;
+  options.read_folders.push_back(folder);
+  return options;
 }
 
 // The error a scene gives (its loc and message), or a test failure when it parses.
@@ -20,9 +28,9 @@ struct ParseFailure {
   std::string message;
 };
 
-inline ParseFailure parse_error(const std::string& text) {
+inline ParseFailure parse_error(const std::string& text, const ParseOptions& options = {}) {
   try {
-    parse(text);
+    parse(text, options);
   } catch (const InputError& error) {
     return {error.loc(), error.message()};
   }

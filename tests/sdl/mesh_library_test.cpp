@@ -93,7 +93,8 @@ TEST(MeshLibrary, ThePlacementOfTheFilesTrianglesGivesTheComponents) {
   const std::string path = (folder.path / "square.obj").string();
   const auto result = parse("convolution { radius 0.5 mesh { \"" + path +
                             "\" scale 2 rotate <10, 20, 30> translate <1, -2, 3> } "
-                            "triangle { <0,0,0>, <1,0,0>, <0,1,0> } }");
+                            "triangle { <0,0,0>, <1,0,0>, <0,1,0> } }",
+                            reading_from(folder.path.string()));
   const implicit::ConvolutionObject object = shape_of<scene::Implicit>(only_object(result)).object;
   ASSERT_EQ(object.meshes.size(), 2u);
   const implicit::MeshComponent& mesh = object.meshes[0];
