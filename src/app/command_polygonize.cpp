@@ -222,8 +222,12 @@ int run_polygonize(const PolygonizeOptions& o, std::ostream& out, std::ostream& 
     size_t shells_kept = 0;
     if (o.outer) shells_kept = polygonize::keep_outer_shells(e.mesh);
     if (e.mesh.soup.triangles.empty()) {
-      err << "convray polygonize: the surface is empty (F < T everywhere); nothing written\n";
-      return 1;
+      // The input's fault (a threshold no point reaches), so exit 2 like any bad input.
+      err << "convray polygonize: the surface is empty: the field stays below T = "
+          << number(prepared.source.threshold)
+          << " everywhere; nothing written (lower --threshold or --offset, or raise --radius or "
+             "--strength)\n";
+      return 2;
     }
     mesh::save_mesh(e.mesh.soup, o.output,
                     o.ascii ? mesh::MeshEncoding::Ascii : mesh::MeshEncoding::Default,

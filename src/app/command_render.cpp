@@ -177,6 +177,17 @@ void check_before_rendering(const RenderOptions& o) {
   if (!o.video.empty()) check_video_tools(o.video);
 }
 
+// A library folder that is not there finds nothing: said once, then the render goes on (as
+// POV-Ray goes on), so that a mistyped -L does not pass without a word.
+void warn_about_missing_library_folders(const RenderOptions& o, std::ostream& err) {
+  for (const std::string& folder : o.library_paths) {
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) {
+      err << "convray: warning: library path '" << folder << "' is not a folder; ignored\n";
+    }
+  }
+}
+
 std::string file_of(const RenderOptions& o, const FramePlan& plan, const FrameClock& frame) {
   return plan.animated ? frame_file_name(o.output, frame.frame_number, plan.name_digits) : o.output;
 }
@@ -194,6 +205,7 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err)
   for (const std::string& warning : plan.warnings) err << "convray: warning: " << warning << "\n";
   if (o.list_frames) return list_frames(o, plan, out);
   check_before_rendering(o);
+  warn_about_missing_library_folders(o, err);
   std::unique_ptr<tbb::global_control> threads;
   if (o.threads > 0) {
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,

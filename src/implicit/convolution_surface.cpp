@@ -1,5 +1,6 @@
 #include "implicit/convolution_surface.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -221,10 +222,22 @@ SurfaceHit surface_hit_from_gradient(const Ray& ray, double t, const Vec3& g) {
   SurfaceHit hit;
   hit.t = t;
   hit.point = ray.at(t);
-  const double length = glm::length(g);
   // Inside is F >= T, so the field falls outwards; a vanishing gradient (a touching point)
-  // falls back to facing the ray.
-  hit.normal = length > 0.0 ? -g / length : -ray.direction;
+  // falls back to facing the ray. Gradients of extreme strengths (1e200, 1e-160) overflow or
+  // underflow when squared: they are scaled by their largest component first.
+  double length = glm::length(g);
+  if (length > 1e-150 && length < 1e150) {
+    hit.normal = -g / length;
+    return hit;
+  }
+  const double largest = std::max({std::abs(g.x), std::abs(g.y), std::abs(g.z)});
+  if (!(largest > 0.0) || !std::isfinite(largest)) {
+    hit.normal = -ray.direction;
+    return hit;
+  }
+  const Vec3 scaled = g / largest;
+  length = glm::length(scaled);
+  hit.normal = -scaled / length;
   return hit;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 // Thresholds of convolution surfaces F = T.
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -19,8 +21,21 @@ inline double threshold_for_offset(double strength, double radius, double offset
 
 // The threshold a user asked for: T itself when given, else the one for `offset` (R/2 when
 // neither is given). Throws std::invalid_argument unless 0 <= offset < radius.
+// Throws std::invalid_argument unless double precision carries a kernel of this radius: the
+// closed forms divide by R^4, which must be a normal, finite number (about 1e-77 < R < 1e77).
+inline void check_radius_in_range(double radius) {
+  const double r4 = radius * radius * radius * radius;
+  if (radius > 0.0 && std::isfinite(r4) && r4 >= std::numeric_limits<double>::min()) return;
+  std::ostringstream message;
+  message << "the kernel radius " << radius
+          << " is outside what double precision carries (R^4 must be a normal number: about "
+             "1e-77 < R < 1e77); scale the model (quick and polygonize: --fit-box) or the radius";
+  throw std::invalid_argument(message.str());
+}
+
 inline double resolve_threshold(double strength, double radius, std::optional<double> offset,
                                 std::optional<double> threshold) {
+  check_radius_in_range(radius);
   if (threshold) return *threshold;
   const double d = offset.value_or(0.5 * radius);
   if (!(d >= 0.0 && d < radius)) {

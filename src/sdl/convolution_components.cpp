@@ -1,9 +1,13 @@
 #include "sdl/convolution_components.hpp"
 
+#include <cmath>
 #include <exception>
+#include <stdexcept>
 #include <glm/geometric.hpp>
 
+#include "implicit/threshold.hpp"
 #include "sdl/component_modifiers.hpp"
+#include "sdl/diagnostics.hpp"
 #include "sdl/item_helpers.hpp"
 #include "sdl/mesh_library.hpp"
 
@@ -180,6 +184,22 @@ void add_component(PendingComponent& component, const implicit::Weight& weight,
   implicit.component_order.emplace_back(component.kind, index);
 }
 
+// What double precision carries (implicit::check_radius_in_range; strengths within 1e+-290,
+// as the threshold): beyond it the field overflows or sinks into subnormals and the picture
+// is silently wrong.
+void check_weight_in_range(const SourceLoc& loc, const implicit::Weight& weight) {
+  try {
+    implicit::check_radius_in_range(weight.radius);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(loc, std::string("convolution component: ") + e.what());
+  }
+  const double s = std::abs(weight.strength);
+  if (s == 0.0 || (s >= 1e-290 && s <= 1e290)) return;
+  throw InputError(loc, "convolution component: the strength " + number_text(weight.strength) +
+                            " is outside what double precision evaluates safely (1e-290 to "
+                            "1e290 in size); scale the strengths and the threshold together");
+}
+
 }  // namespace
 
 void resolve_components(std::vector<PendingComponent>& components,
@@ -189,6 +209,7 @@ void resolve_components(std::vector<PendingComponent>& components,
     const implicit::Weight weight{
         component.strength.value_or(defaults.strength),
         component.radius.value_or(defaults.radius) * component.radius_scale};
+    check_weight_in_range(component.loc, weight);
     const bool groupable = component.single_triangle && !component.texture;
     if (groupable && last_is_triangle_group &&
         same_weight(implicit.object.meshes.back().weight, weight)) {

@@ -86,6 +86,16 @@ bool parse_setting(Parser& parser, ConvolutionSettings& settings) {
   return true;
 }
 
+// Fields are sums of strength-weighted closed forms, their gradients products of them: a
+// threshold within 1e+-290 leaves them room to neither overflow nor lose precision in
+// subnormals (strengths of 1e308 or 1e-320 otherwise shade as flat silhouettes).
+void check_threshold_in_range(Parser& parser, const SourceLoc& loc, double threshold) {
+  if (threshold >= 1e-290 && threshold <= 1e290) return;
+  parser.fail(loc, "convolution: the threshold " + number_text(threshold) +
+                       " is outside what double precision evaluates safely (1e-290 to 1e290); "
+                       "scale the strengths (the surface depends only on strength / threshold)");
+}
+
 double resolve_threshold(Parser& parser, const SourceLoc& loc,
                          const ConvolutionSettings& settings) {
   const ConvolutionDefaults& d = settings.defaults;
@@ -94,7 +104,13 @@ double resolve_threshold(Parser& parser, const SourceLoc& loc,
       parser.fail(settings.threshold_loc, "convolution threshold must be positive, found " +
                                               number_text(*settings.threshold));
     }
+    check_threshold_in_range(parser, settings.threshold_loc, *settings.threshold);
     return *settings.threshold;
+  }
+  try {
+    implicit::check_radius_in_range(d.radius);
+  } catch (const std::invalid_argument& e) {
+    parser.fail(loc, std::string("convolution: ") + e.what());
   }
   const double offset = settings.offset.value_or(0.5 * d.radius);
   if (!(offset >= 0.0 && offset < d.radius)) {
@@ -113,6 +129,7 @@ double resolve_threshold(Parser& parser, const SourceLoc& loc,
                 "convolution: a threshold from the offset needs a positive strength (found " +
                     number_text(d.strength) + "); give the threshold itself instead");
   }
+  check_threshold_in_range(parser, settings.strength_loc.value_or(loc), threshold);
   return threshold;
 }
 

@@ -2,6 +2,8 @@
 // the parse shares: files, messages, include search.
 #include "sdl/parser.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +11,7 @@
 
 #include "sdl/diagnostics.hpp"
 #include "sdl/items.hpp"
+#include "sdl/keywords.hpp"
 #include "sdl/parser_impl.hpp"
 #include "util/printable.hpp"
 
@@ -39,6 +42,25 @@ std::string describe_file_kind(const std::filesystem::file_status& status) {
   }
 }
 
+// Declare=ID=VALUE from the command line names an identifier: a reserved word there would be
+// shadowed by the keyword in every use, so it is refused rather than silently ignored.
+void check_declared_name(const std::string& name) {
+  const SourceLoc where{"command line"};
+  const bool letters = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) ||
+                                         name[0] == '_');
+  const bool word = std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  });
+  if (!letters || !word) {
+    throw InputError(where, "Declare=" + name + ": '" + name +
+                                "' is not an identifier (a letter or _, then letters, digits, _)");
+  }
+  if (classify_word(name) != Word::none) {
+    throw InputError(where, "Declare=" + name + ": '" + name +
+                                "' is a reserved word of the scene language, not an identifier");
+  }
+}
+
 }  // namespace
 
 // --- Impl: context ------------------------------------------------------------------------
@@ -46,7 +68,10 @@ std::string describe_file_kind(const std::filesystem::file_status& status) {
 Parser::Impl::Impl(Parser& owner_parser, ParseOptions parse_options)
     : owner(owner_parser), options(std::move(parse_options)) {
   push_scope();  // the global scope
-  for (const auto& [name, value] : options.declares) declare_global(name, make_value(value));
+  for (const auto& [name, value] : options.declares) {
+    check_declared_name(name);
+    declare_global(name, make_value(value));
+  }
 }
 
 void Parser::Impl::fail(const SourceLoc& at, const std::string& message) const {

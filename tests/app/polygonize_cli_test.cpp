@@ -146,13 +146,17 @@ TEST_F(PolygonizeCommand, BadInputSaysWhyExitsWithTwoAndWritesNothing) {
   }
 }
 
-TEST_F(PolygonizeCommand, EmptySurfaceExitsWithOneAndWritesNothing) {
+// An empty surface is the input's fault (a threshold no point reaches): exit 2, as for any bad
+// input (issue 21; it was exit 1, the code for internal errors).
+TEST_F(PolygonizeCommand, EmptySurfaceExitsWithTwoAndWritesNothing) {
   std::ofstream(file("blobs.pov")) << "#declare Blobs = convolution { radius 1 point { 0 } }\n";
   const testing::CliRun run =
       run_convray("polygonize '" + file("blobs.pov") + "' --object Blobs --threshold 5 -o '" +
                   file("o.obj") + "'");
-  EXPECT_EQ(run.exit_code, 1) << run.all();
-  EXPECT_NE(run.err.find("the surface is empty"), std::string::npos) << run.err;
+  EXPECT_EQ(run.exit_code, 2) << run.all();
+  EXPECT_NE(run.err.find("the surface is empty: the field stays below T = 5 everywhere"),
+            std::string::npos)
+      << run.err;
   EXPECT_FALSE(std::filesystem::exists(file("o.obj")));
 }
 
