@@ -38,10 +38,10 @@ class FitChecker {
     pieces_.clear();
     const uint32_t id = iv.primitive;
     const double width = iv.exit - iv.enter;
-    // An arc's conservative interval is fitted in pieces no longer than its R.
+    // An arc's conservative interval is fitted in pieces no longer than 2R.
     double count = 1.0;
     if (id >= s_.arc_base && id < s_.triangle_base) {
-      count = std::max(1.0, std::ceil(width / s_.arc_radii[id - s_.arc_base]));
+      count = std::max(1.0, std::ceil(width / (2.0 * s_.arc_radii[id - s_.arc_base])));
     }
     double t0 = iv.enter, v0 = 0.0, g0 = 0.0;
     for (double k = 1.0; k <= count; k += 1.0) {
