@@ -110,8 +110,8 @@ Ray random_ray(std::mt19937_64& rng, int i) {
   std::normal_distribution<double> n;
   std::uniform_real_distribution<double> position(-12.0, 12.0);
   Vec3 d(n(rng), n(rng), n(rng));
-  if (i % 5 == 0) d[i % 3] = 0.0;              // parallel to a pair of faces
-  if (i % 7 == 0) {  // along an axis
+  if (i % 5 == 0) d[i % 3] = 0.0;  // parallel to a pair of faces
+  if (i % 7 == 0) {                // along an axis
     d = Vec3(0.0);
     d[i % 3] = i % 2 ? 1.0 : -1.0;
   }
@@ -131,7 +131,8 @@ TEST(BoxBvh, CrossedFindsEveryBoxTheRayMeetsAndWhere) {
       const double tmax = i % 3 ? INFINITY : tmin + 15.0 * unit(rng);
       std::vector<BoxBvh::Span> spans;
       bvh.crossed(ray, tmin, tmax, spans);
-      std::sort(spans.begin(), spans.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+      std::sort(spans.begin(), spans.end(),
+                [](const auto& a, const auto& b) { return a.id < b.id; });
       // Brute force: every box clipped on its own.
       std::vector<BoxBvh::Span> expected;
       for (uint32_t b = 0; b < boxes.size(); ++b) {

@@ -190,9 +190,11 @@ TEST(ConvolutionSurface, ArcsWideAgainstTheirRadiusAgreeWithTheReferenceTracer) 
         // From outside the ring towards a point of the ring's disc, tilted a little out of
         // its plane: the ray crosses the tube on both sides of the hole.
         const double a = 2.0 * kPi * unit(rng), b = 2.0 * kPi * unit(rng);
-        const Vec3 target = arc.center + rho * unit(rng) * (std::cos(b) * arc.start + std::sin(b) * second) +
-                            R * (unit(rng) - 0.5) * arc.axis;
-        const Vec3 origin = arc.center + 3.0 * (rho + R) * (std::cos(a) * arc.start + std::sin(a) * second) +
+        const Vec3 in_disc = std::cos(b) * arc.start + std::sin(b) * second;
+        const Vec3 around = std::cos(a) * arc.start + std::sin(a) * second;
+        const Vec3 target =
+            arc.center + rho * unit(rng) * in_disc + R * (unit(rng) - 0.5) * arc.axis;
+        const Vec3 origin = arc.center + 3.0 * (rho + R) * around +
                             (rho + R) * 0.3 * (unit(rng) - 0.5) * arc.axis;
         const Ray ray{origin, glm::normalize(target - origin)};
         std::vector<double> roots, reference;

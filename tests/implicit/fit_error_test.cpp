@@ -168,15 +168,19 @@ void check_estimate(Kind kind, const char* name, uint64_t seed) {
       }
     }
   }
-  std::printf("[ fit ] %-14s %5d pieces, estimate below the measured error on %d, "
-              "by at most %.3g T\n", name, pieces, short_of_measured, worst_shortfall);
+  std::printf(
+      "[ fit ] %-14s %5d pieces, estimate below the measured error on %d, "
+      "by at most %.3g T\n",
+      name, pieces, short_of_measured, worst_shortfall);
   EXPECT_GT(pieces, 1000);
   EXPECT_LE(short_of_measured, pieces / 100);
   EXPECT_LE(worst_shortfall, 2.0 * kFitTolerance);
 }
 
 TEST(FitError, EstimateBoundsTheErrorOnSegments) { check_estimate(Kind::segment, "segment", 1421); }
-TEST(FitError, EstimateBoundsTheErrorOnTriangles) { check_estimate(Kind::triangle, "triangle", 1422); }
+TEST(FitError, EstimateBoundsTheErrorOnTriangles) {
+  check_estimate(Kind::triangle, "triangle", 1422);
+}
 TEST(FitError, EstimateBoundsTheErrorOnArcs) { check_estimate(Kind::arc, "arc", 1423); }
 TEST(FitError, EstimateBoundsTheErrorOnBlobCylinders) {
   check_estimate(Kind::blob_cylinder, "blob cylinder", 1424);

@@ -224,8 +224,7 @@ TEST(SphereSweep, LongChainsKeepTheirAccuracy) {
   constexpr double kSpacing = 0.35, kRadius = 1.0;
   ConvolutionObject o;
   for (int i = 0; i < kCount; ++i) {
-    o.blob_spheres.push_back(
-        {{i * kSpacing, jitter(rng), jitter(rng)}, {strength(rng), kRadius}});
+    o.blob_spheres.push_back({{i * kSpacing, jitter(rng), jitter(rng)}, {strength(rng), kRadius}});
   }
   // About the mean field along the axis, (16/15) r / spacing: it crosses T again and again.
   o.threshold = 16.0 / 15.0 * kRadius / kSpacing;
@@ -248,7 +247,8 @@ TEST(SphereSweep, LongChainsKeepTheirAccuracy) {
     const std::vector<double> expected = bracketed_roots(g, 0.0, end, 400000);
     ASSERT_GT(expected.size(), 100u);
     ASSERT_EQ(roots.size(), expected.size());
-    for (size_t k = 0; k < roots.size(); ++k) EXPECT_NEAR(roots[k], expected[k], 1e-14 * std::max(1.0, expected[k])) << k;
+    for (size_t k = 0; k < roots.size(); ++k)
+      EXPECT_NEAR(roots[k], expected[k], 1e-14 * std::max(1.0, expected[k])) << k;
   }
 }
 

@@ -28,7 +28,8 @@ Vec3 random_point(std::mt19937_64& rng, const std::vector<Box3>& boxes, const Bo
   const int k = kind(rng);
   const Vec3 grow = 0.1 * region.extent();
   if (k == 0) {
-    return region.lo - grow + (region.extent() + 2.0 * grow) * Vec3(unit(rng), unit(rng), unit(rng));
+    return region.lo - grow +
+           (region.extent() + 2.0 * grow) * Vec3(unit(rng), unit(rng), unit(rng));
   }
   const Box3& b = boxes[std::uniform_int_distribution<size_t>(0, boxes.size() - 1)(rng)];
   Vec3 p = b.lo + (b.hi - b.lo) * Vec3(unit(rng), unit(rng), unit(rng));

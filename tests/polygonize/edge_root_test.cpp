@@ -91,7 +91,9 @@ TEST(EdgeRoot, LinearFieldInOneStep) {
     const Vec3 g = (b - a) / glm::dot(b - a, b - a);  // F rises by 1 from a to b
     const Vec3 at_root = a + t_root * (b - a);
     FieldSource source;
-    source.field = [&](const Vec3& p) { return field::FieldSample{T + glm::dot(p - at_root, g), g}; };
+    source.field = [&](const Vec3& p) {
+      return field::FieldSample{T + glm::dot(p - at_root, g), g};
+    };
     source.threshold = T;
     const EdgeRoot root =
         find_edge_root(source, a, source.field(a).value, b, source.field(b).value, 1e-9);
@@ -119,7 +121,8 @@ TEST(EdgeRoot, ApproximateValuesStillEndOnTheExactField) {
     source.threshold = T;
     const Vec3 a = rho * 0.5 * unit(rng) * random_unit(rng);
     const Vec3 b = rho * (1.05 + unit(rng)) * random_unit(rng);
-    const EdgeRoot root = find_edge_root(source, a, source.value_at(a), b, source.value_at(b), 1e-9);
+    const EdgeRoot root =
+        find_edge_root(source, a, source.value_at(a), b, source.value_at(b), 1e-9);
     converged += root.converged;
     EXPECT_LE(std::abs(kernel(root.position, c, R).value - T), 1e-9 * T) << i;
     double t = 0.0;
@@ -154,10 +157,13 @@ TEST(EdgeRoot, TheAnswerStaysInsideTheEdge) {
     const double T = 1.0;
     FieldSource source;
     // Falls from a to b, T at t_root (the field exactly T at an end counts as inside).
-    source.field = [&](const Vec3& p) { return field::FieldSample{T - (p.x - t_root), Vec3(-1, 0, 0)}; };
+    source.field = [&](const Vec3& p) {
+      return field::FieldSample{T - (p.x - t_root), Vec3(-1, 0, 0)};
+    };
     source.threshold = T;
     const Vec3 a(0.0), b(1.0, 0.0, 0.0);
-    const double fa = source.field(a).value, fb = std::min(source.field(b).value, T * (1.0 - 1e-16));
+    const double fa = source.field(a).value,
+                 fb = std::min(source.field(b).value, T * (1.0 - 1e-16));
     const EdgeRoot root = find_edge_root(source, a, fa, b, fb, 1e-7);
     EXPECT_GE(root.position.x, 1e-9 * (1.0 - 1e-12)) << t_root;
     EXPECT_LE(root.position.x, 1.0 - 1e-9 * (1.0 - 1e-6)) << t_root;

@@ -88,7 +88,8 @@ Surface extract(const Lattice& lattice, int diagonal) {
           mask |= int(lattice.at(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1))) << c;
         }
         const auto vertex = [&](const CubeEdge& e) {
-          const std::array<int, 3> a{i + (e.low & 1), j + ((e.low >> 1) & 1), k + ((e.low >> 2) & 1)};
+          const std::array<int, 3> a{i + (e.low & 1), j + ((e.low >> 1) & 1),
+                                     k + ((e.low >> 2) & 1)};
           const std::array<int, 3> b{i + (e.high & 1), j + ((e.high >> 1) & 1),
                                      k + ((e.high >> 2) & 1)};
           EXPECT_NE(lattice.at(a[0], a[1], a[2]), lattice.at(b[0], b[1], b[2]));
