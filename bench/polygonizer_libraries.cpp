@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "fixtures/defective_soups.hpp"
 #include "implicit/threshold.hpp"
 #include "mesh/load.hpp"
 #include "mesh/procedural.hpp"

@@ -62,6 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 #include <sstream>
 #include <vector>
 
+#include "fixtures/defective_soups.hpp"
 #include "mesh/procedural.hpp"
 #include "mesh/write.hpp"
 

@@ -1,7 +1,11 @@
 // Specification of the POV-Ray blob components: strength * (1 - d^2/r^2)^2 for d < r, else 0,
 // with d the distance to the centre (sphere) or to the segment base-apex (cylinder: a capsule,
 // distance to the axis along the body and to the nearer end point beyond it). Checked against
-// a direct evaluation of that definition, and the gradient against a 5-point stencil.
+// POV-Ray's own formulation of it (source/core/shape/blob.cpp): the density expanded in the
+// squared distance, c0 d^4 + c1 d^2 + c2 with c0 = s/r^4, c1 = -2 s/r^2, c2 = s, its gradient
+// 2 (2 c0 d^2 + c1) times the offset, and the cylinder as three pieces (a body measured in the
+// axis's own frame, and a hemisphere at each end), none of it shared with field/blob.cpp's
+// clamped projection onto the segment; and the gradient against a 5-point stencil.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,61 +25,72 @@ namespace {
 constexpr unsigned long long kSeed = 0x626c6f622d303031ULL;  // "blob-001"
 constexpr int kCaseCount = 3000;
 constexpr double kValueTolerance = 1e-12;          // times |strength|
-constexpr double kDirectGradientTolerance = 1e-10;  // relative, floor |strength| / r
+constexpr double kFormulaGradientTolerance = 1e-10;  // relative, floor |strength| / r
 constexpr double kStencilTolerance = 1e-8;
 constexpr double kStencilMargin = 0.02;  // times r: away from d = r and from the end planes
 constexpr double kStencilStep = 1e-4;
 
-// POV-Ray's kernel of a squared distance, and its gradient given the offset p - closest.
-FieldSample direct_kernel(const Vec3& offset, double radius, double strength) {
-  const double d2 = glm::dot(offset, offset);
+// POV-Ray's density of one component from the squared distance d2 and the offset it is
+// measured along: c0 d2^2 + c1 d2 + c2, zero from d2 = r^2 on.
+FieldSample povray_density(const Vec3& offset, double d2, double radius, double strength) {
   if (d2 >= radius * radius) return {};
-  const double inside = 1.0 - d2 / (radius * radius);
-  return {strength * inside * inside, (-4.0 * strength * inside / (radius * radius)) * offset};
+  const double c0 = strength / (radius * radius * radius * radius);
+  const double c1 = -2.0 * strength / (radius * radius), c2 = strength;
+  return {(c0 * d2 + c1) * d2 + c2, (2.0 * (2.0 * c0 * d2 + c1)) * offset};
 }
 
-FieldSample direct_sphere(const Vec3& p, const Vec3& center, double radius, double strength) {
-  return direct_kernel(p - center, radius, strength);
+FieldSample povray_sphere(const Vec3& p, const Vec3& center, double radius, double strength) {
+  const Vec3 offset = p - center;
+  return povray_density(offset, glm::dot(offset, offset), radius, strength);
 }
 
-// Parameter of p's projection on the axis (0 at base, 1 at apex).
+// Where p lies along the axis, in lengths of the axis (0 at base, 1 at apex): for counting
+// which region the cases fall in.
 double axis_parameter(const Vec3& p, const Vec3& base, const Vec3& apex) {
   const Vec3 axis = apex - base;
   return glm::dot(p - base, axis) / glm::dot(axis, axis);
 }
 
-FieldSample direct_cylinder(const Vec3& p, const Vec3& base, const Vec3& apex, double radius,
+// POV-Ray's cylinder: in the frame of the unit axis u, a point at height h along it is in the
+// body for 0 <= h <= length (distance to the axis line), else in the hemisphere of the end it
+// is beyond (distance to that end point).
+FieldSample povray_cylinder(const Vec3& p, const Vec3& base, const Vec3& apex, double radius,
                             double strength) {
-  const double t = std::clamp(axis_parameter(p, base, apex), 0.0, 1.0);
-  return direct_kernel(p - (base + t * (apex - base)), radius, strength);
+  const double length = glm::length(apex - base);
+  const Vec3 u = (apex - base) / length;
+  const double h = glm::dot(p - base, u);
+  if (h < 0.0) return povray_sphere(p, base, radius, strength);
+  if (h > length) return povray_sphere(p, apex, radius, strength);
+  const Vec3 radial = (p - base) - h * u;
+  return povray_density(radial, glm::dot(radial, radial), radius, strength);
 }
 
 struct Checks {
   reference::RatioCheck value, gradient, stencil;
   explicit Checks(const std::string& component)
-      : value(component + " value vs definition"),
-        gradient(component + " gradient vs definition"),
+      : value(component + " value vs POV-Ray's formula"),
+        gradient(component + " gradient vs POV-Ray's formula"),
         stencil(component + " gradient vs 5-point stencil") {}
 
   void report() const {
     for (const reference::RatioCheck* check : {&value, &gradient, &stencil}) {
-      std::printf("[ blob ] %-44s %5d cases, worst error/tolerance %.3g\n", check->what().c_str(),
+      std::printf("[ blob ] %-52s %5d cases, worst error/tolerance %.3g\n", check->what().c_str(),
                   check->checked(), check->worst().ratio);
       check->expect_no_failure();
     }
   }
 };
 
-// Compares one evaluation with the direct definition and, where smooth, the stencil.
+// Compares one evaluation with POV-Ray's formula and, where smooth, the stencil.
 template <class Evaluate>
-void check(const Evaluate& evaluate, const FieldSample& direct, const Vec3& p, double radius,
+void check(const Evaluate& evaluate, const FieldSample& povray, const Vec3& p, double radius,
            double strength, bool smooth, const std::string& inputs, Checks& checks) {
   const FieldSample sample = evaluate(p);
   const double floor = std::abs(strength) / radius;
-  checks.value.add(reference::value_error_ratio(sample.value, direct.value, kValueTolerance, std::abs(strength)),
+  checks.value.add(reference::value_error_ratio(sample.value, povray.value, kValueTolerance, std::abs(strength)),
                    inputs);
   checks.gradient.add(
-      reference::gradient_error_ratio(sample.gradient, direct.gradient, kDirectGradientTolerance, floor), inputs);
+      reference::gradient_error_ratio(sample.gradient, povray.gradient, kFormulaGradientTolerance, floor), inputs);
   if (!smooth) return;
   const auto value = [&](const Vec3& q) { return evaluate(q).value; };
   if (const auto stencil = reference::five_point_gradient(value, p, kStencilStep * radius))
@@ -111,7 +126,7 @@ TEST(BlobSphere, MatchesThePovRayDefinition) {
     (distance < radius ? inside : outside) += 1;
     negative += strength < 0.0;
     check([&](const Vec3& q) { return blob_sphere_field(q, center, radius, strength); },
-          direct_sphere(p, center, radius, strength), p, radius, strength,
+          povray_sphere(p, center, radius, strength), p, radius, strength,
           std::abs(distance - radius) > kStencilMargin * radius,
           describe(p, center, center, radius, strength), checks);
   }
@@ -140,15 +155,15 @@ TEST(BlobCylinder, IsACapsuleMatchingThePovRayDefinition) {
     const Vec3 p = anchor + radius * random.uniform(0.0, 1.3) * random.unit();
 
     const double t = axis_parameter(p, base, apex);
-    const FieldSample direct = direct_cylinder(p, base, apex, radius, strength);
-    if (direct.value == 0.0) ++count[kOutside];
+    const FieldSample povray = povray_cylinder(p, base, apex, radius, strength);
+    if (povray.value == 0.0) ++count[kOutside];
     else ++count[t < 0.0 ? kBaseCap : t > 1.0 ? kApexCap : kBody];
     count[kNegative] += strength < 0.0;
     const double distance = glm::length(p - (base + std::clamp(t, 0.0, 1.0) * (apex - base)));
     const bool smooth = std::abs(distance - radius) > kStencilMargin * radius &&
                         std::abs(t) * length > kStencilMargin * radius &&
                         std::abs(t - 1.0) * length > kStencilMargin * radius;
-    check([&](const Vec3& q) { return blob_cylinder_field(q, base, apex, radius, strength); }, direct, p,
+    check([&](const Vec3& q) { return blob_cylinder_field(q, base, apex, radius, strength); }, povray, p,
           radius, strength, smooth, describe(p, base, apex, radius, strength), checks);
   }
   for (int k = 0; k < kRegionCount; ++k) std::printf("[ blob ] cylinder %-20s %6d\n", kRegionNames[k], count[k]);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "fixtures/defective_soups.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/reference_tracer.hpp"
 #include "implicit/threshold.hpp"

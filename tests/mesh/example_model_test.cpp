@@ -6,8 +6,8 @@
 
 #include <cstdlib>
 
+#include "fixtures/defective_soups.hpp"
 #include "mesh/load.hpp"
-#include "mesh/procedural.hpp"
 #include "mesh/stats.hpp"
 #include "mesh/write.hpp"
 #include "mesh_test_support.hpp"

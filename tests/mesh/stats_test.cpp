@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "fixtures/defective_soups.hpp"
 #include "mesh/load.hpp"
 #include "mesh/procedural.hpp"
 #include "mesh/stats.hpp"

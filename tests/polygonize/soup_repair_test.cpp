@@ -5,6 +5,7 @@
 // an open hole is a torus (Euler characteristic 0), with the hole closed a sphere (2).
 #include <gtest/gtest.h>
 
+#include "fixtures/defective_soups.hpp"
 #include "implicit/mesh_field.hpp"
 #include "implicit/threshold.hpp"
 #include "mesh/procedural.hpp"
@@ -70,8 +71,8 @@ TEST(SoupRepair, AxisAlignedSheetAtTheEvaluationsResolutionHasNoSelfIntersection
 }
 
 TEST(SoupRepair, DefectiveSoupBecomesClosedAndItsOuterShellIsKept) {
-  // Hole, flipped and duplicated triangles, a sliver and a fin (mesh/procedural.hpp). The hole
-  // (five triangles around a vertex, about 0.3 across) closes at offset 0.35 with R = 0.6:
+  // Hole, flipped and duplicated triangles, a sliver and a fin (fixtures/defective_soups.hpp).
+  // The hole (five triangles around a vertex, about 0.3 across) closes at offset 0.35 with R = 0.6:
   // an outer and an inner shell; --outer keeps one.
   const auto f = soup_field(mesh::defective_soup(), 0.6, 0.35);
   SurfaceMesh m = polygonize(f->source, {.cell = 0.05});
