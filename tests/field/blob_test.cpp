@@ -1,11 +1,12 @@
 // Specification of the POV-Ray blob components: strength * (1 - d^2/r^2)^2 for d < r, else 0,
 // with d the distance to the centre (sphere) or to the segment base-apex (cylinder: a capsule,
 // distance to the axis along the body and to the nearer end point beyond it). Checked against
-// POV-Ray's own formulation of it (source/core/shape/blob.cpp): the density expanded in the
-// squared distance, c0 d^4 + c1 d^2 + c2 with c0 = s/r^4, c1 = -2 s/r^2, c2 = s, its gradient
-// 2 (2 c0 d^2 + c1) times the offset, and the cylinder as three pieces (a body measured in the
-// axis's own frame, and a hemisphere at each end), none of it shared with field/blob.cpp's
-// clamped projection onto the segment; and the gradient against a 5-point stencil.
+// the documented definition rewritten independently: the density expanded in the squared
+// distance (our algebra), c0 d^4 + c1 d^2 + c2 with c0 = s/r^4, c1 = -2 s/r^2, c2 = s, its
+// gradient 2 (2 c0 d^2 + c1) times the offset, and the cylinder as three pieces (a body measured
+// in the axis's own frame, and a hemisphere at each end, as POV-Ray's documentation describes
+// the capsule), none of it shared with field/blob.cpp's clamped projection onto the segment;
+// and the gradient against a 5-point stencil.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,8 +31,8 @@ constexpr double kStencilTolerance = 1e-8;
 constexpr double kStencilMargin = 0.02;  // times r: away from d = r and from the end planes
 constexpr double kStencilStep = 1e-4;
 
-// POV-Ray's density of one component from the squared distance d2 and the offset it is
-// measured along: c0 d2^2 + c1 d2 + c2, zero from d2 = r^2 on.
+// The documented density s (1 - d2/r^2)^2 of one component, expanded in the squared distance
+// d2 and measured along `offset`: c0 d2^2 + c1 d2 + c2, zero from d2 = r^2 on.
 FieldSample povray_density(const Vec3& offset, double d2, double radius, double strength) {
   if (d2 >= radius * radius) return {};
   const double c0 = strength / (radius * radius * radius * radius);
@@ -51,7 +52,7 @@ double axis_parameter(const Vec3& p, const Vec3& base, const Vec3& apex) {
   return glm::dot(p - base, axis) / glm::dot(axis, axis);
 }
 
-// POV-Ray's cylinder: in the frame of the unit axis u, a point at height h along it is in the
+// The documented cylinder (a capsule): in the frame of the unit axis u, a point at height h along it is in the
 // body for 0 <= h <= length (distance to the axis line), else in the hemisphere of the end it
 // is beyond (distance to that end point).
 FieldSample povray_cylinder(const Vec3& p, const Vec3& base, const Vec3& apex, double radius,
