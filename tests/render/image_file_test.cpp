@@ -9,6 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "util/error.hpp"
@@ -153,6 +155,33 @@ TEST_F(ImageFile, ReplacesAnExistingFileWhole) {
   write_image_atomically(path("a.png"), {4, 2, values, PixelEncoding::linear});
   EXPECT_EQ(read_back(path("a.png")).width, 4);
   EXPECT_EQ(files_in_folder(), 1u);
+}
+
+// +C trusts a frame only when it is whole: every truncation of a PNG, a flipped byte, or
+// another size is not complete, a whole file of the right size is (for PNG and for TIFF), and
+// the check prints nothing (no "libpng error" line on the terminal).
+TEST_F(ImageFile, CompletenessFindsEveryTruncationQuietly) {
+  const std::vector<float> values = test_values();
+  write_image_atomically(path("a.png"), {4, 2, values, PixelEncoding::linear});
+  write_image_atomically(path("a.tif"), {4, 2, values, PixelEncoding::linear});
+  EXPECT_TRUE(image_file_is_complete(path("a.png"), 4, 2));
+  EXPECT_TRUE(image_file_is_complete(path("a.tif"), 4, 2));
+  EXPECT_FALSE(image_file_is_complete(path("a.png"), 2, 4));
+  EXPECT_FALSE(image_file_is_complete(path("missing.png"), 4, 2));
+  std::ifstream in(path("a.png"), std::ios::binary);
+  const std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ::testing::internal::CaptureStderr();
+  for (size_t size = 0; size < whole.size(); ++size) {
+    std::ofstream(path("cut.png"), std::ios::binary) << whole.substr(0, size);
+    EXPECT_FALSE(image_file_is_complete(path("cut.png"), 4, 2)) << size << " bytes";
+  }
+  for (size_t at = 8; at < whole.size(); at += 7) {
+    std::string damaged = whole;
+    damaged[at] = char(damaged[at] ^ 0x20);
+    std::ofstream(path("bad.png"), std::ios::binary) << damaged;
+    EXPECT_FALSE(image_file_is_complete(path("bad.png"), 4, 2)) << "byte " << at;
+  }
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
 }
 
 TEST(EncodeSrgb, MatchesTheDefinition) {
