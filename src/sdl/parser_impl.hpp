@@ -133,7 +133,7 @@ struct Parser::Impl {
   NameMap<std::shared_ptr<const UserFunction>> functions;
   NameMap<Deprecation> deprecations;
   const LexToken* last_deprecated_use = nullptr;
-  std::vector<std::uint64_t> random_streams;
+  std::vector<std::uint32_t> random_streams;  // the states of seed()'s streams
   std::vector<std::string> warnings;
   std::map<std::string, Value> globals_view;
   double language_version = 3.7;
