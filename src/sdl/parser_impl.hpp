@@ -25,6 +25,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -83,9 +84,18 @@ struct Frame {
   std::string name;         // macro or function name, for messages
 };
 
+// A macro parameter passed by reference (POV-Ray passes an argument that is a bare identifier
+// or array element that way): the caller's variable, or an element of its array, itself.
+struct Alias {
+  std::uint64_t scope = 0;          // serial of the scope that holds the variable
+  std::string name;                 // the variable's name there
+  std::vector<std::size_t> element; // the element's path in the variable's array; empty: all
+};
+
 struct Scope {
   std::uint64_t serial = 0;
   NameMap<Value> values;
+  NameMap<Alias> aliases;  // names that stand for another scope's variable; never in values
 };
 
 struct MacroParameter {
@@ -235,6 +245,8 @@ struct Parser::Impl {
   void directive_macro(TokenRef at);
   bool expand_if_macro(const LexToken& name);
   void call_macro(std::shared_ptr<const Macro> macro, TokenRef at);
+  std::optional<Alias> parse_reference_argument();
+  bool reference_argument_ahead() const;
   void declare_function(const std::string& name);
   Value call_function(const UserFunction& function, TokenRef at);
   std::uint32_t find_closing_brace(std::uint32_t opened_at);
@@ -293,6 +305,10 @@ struct Parser::Impl {
   void declare_global(std::string_view name, Value value);
   void declare_local(std::string_view name, Value value);
   void store(std::uint64_t scope_serial, std::string_view name, Value value);
+  const Alias* innermost_alias(std::string_view name) const;
+  std::optional<Alias> alias_of(std::string_view name) const;
+  Value* resolve(const Alias& alias);
+  void store_through(const Alias& alias, Value value, TokenRef at);
   std::uint64_t push_scope();
   void pop_scope(std::uint64_t serial);
   bool undeclare(std::string_view name);
