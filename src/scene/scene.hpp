@@ -66,6 +66,9 @@ struct Fog {
 
 struct GlobalSettings {
   double assumed_gamma = 1.0;  // POV-Ray 3.7 scenes say 1.0; anything else is warned about
+  // POV-Ray 3.7 turns gamma correction off for older scenes (no #version, or one below 3.7)
+  // that give no assumed_gamma: their colours are written as computed, not sRGB-encoded.
+  bool gamma_correction = true;
   int max_trace_level = 5;
   Vec3 ambient_light{1.0};
   double adc_bailout = 1.0 / 255.0;

@@ -41,6 +41,7 @@ void Parser::Impl::run_directive() {
     case Word::version: {
       const TokenRef value_at = ref();
       language_version = to_float(parse_expression(), value_at, "after #version");
+      version_given = true;
       accept_optional_semicolon();
       return;
     }

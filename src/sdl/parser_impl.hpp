@@ -147,6 +147,8 @@ struct Parser::Impl {
   std::vector<std::string> warnings;
   std::map<std::string, Value> globals_view;
   double language_version = 3.7;
+  bool version_given = false;        // a #version directive was read
+  bool assumed_gamma_given = false;  // global_settings { assumed_gamma ... } was read
 
   int nesting_depth = 0;
   int macro_depth = 0, include_depth = 0, function_depth = 0;
