@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -96,8 +97,17 @@ struct Csg {
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
                            Implicit, Csg>;
 
+// A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
+// empty stand-in, so that include files declaring such objects still work; placing it in the
+// scene (itself, or inside CSG) is an error that names it.
+struct UnsupportedObject {
+  std::string kind;  // the POV-Ray keyword
+  SourceLoc declared_at;
+};
+
 struct Object {
   Shape shape;
+  std::optional<UnsupportedObject> unsupported;
   Transform transform;      // own space -> world (or parent CSG space)
   TexturePtr texture;       // null: inherited from the CSG parent, else the default texture
   std::optional<Interior> interior;

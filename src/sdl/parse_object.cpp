@@ -146,7 +146,7 @@ void parse_top_level_object(Parser& parser, scene::Scene& scene) {
     }
     base = *object;
   }
-  scene.objects.push_back(with_default_texture(parser, parse_object_body(parser, block, base)));
+  scene.objects.push_back(placed_object(parser, parse_object_body(parser, block, base), loc));
 }
 
 scene::ObjectPtr parse_unsupported_object_as_empty(Parser& parser) {
@@ -155,10 +155,11 @@ scene::ObjectPtr parse_unsupported_object_as_empty(Parser& parser) {
   skip_braced(parser, word, loc);
   warn_once(parser, loc,
             "'" + word +
-                "' objects are not supported yet by convray: declared ones are empty "
-                "(nothing is drawn where they are used)");
+                "' objects are not supported yet by convray: declaring one is accepted, "
+                "placing it in the scene is an error");
   scene::Object empty;
   empty.shape = scene::Csg{scene::CsgOperation::union_, {}};
+  empty.unsupported = scene::UnsupportedObject{word, loc};
   empty.loc = loc;
   return std::make_shared<const scene::Object>(std::move(empty));
 }

@@ -134,6 +134,16 @@ TEST(ItemsAtmosphere, GlobalSettings) {
   EXPECT_FALSE(has_warning(result, "assumed_gamma"));
 }
 
+TEST(ItemsLight, MediaAttenuationSaysWhatIsLeftOut) {
+  // convray renders no media: shadows dimmed by media cannot be drawn, and the warning says so.
+  EXPECT_TRUE(has_warning(parse("light_source { <0, 5, 0> rgb 1 media_attenuation on }"),
+                          "shadow rays are not dimmed by media"));
+  EXPECT_FALSE(has_warning(parse("light_source { <0, 5, 0> rgb 1 media_attenuation off }"),
+                           "media"));
+  EXPECT_FALSE(has_warning(parse("light_source { <0, 5, 0> rgb 1 media_interaction off }"),
+                           "media"));
+}
+
 TEST(ItemsAtmosphere, OlderScenesWithoutAssumedGammaAreNotGammaCorrected) {
   // POV-Ray 3.7's rule (tests/app/povray_gamma_test.cpp compares the pictures with povray's).
   const auto no_version = parse("sphere { 0, 1 }");
