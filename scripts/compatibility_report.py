@@ -28,6 +28,7 @@ def cell(text):
 def refusal_reason(detail):
     """The error without its place, so that equal refusals group together."""
     reason = re.sub(r"^.*?:\d+:\d+: ", "", detail)
+    reason = re.sub(r": this object uses the one declared at .*$", " (declared, then placed)", reason)
     return re.sub(r"\(did you mean [^)]*\)", "", reason).strip()
 
 

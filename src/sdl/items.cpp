@@ -43,7 +43,7 @@ constexpr std::string_view kStatementWords[] = {
 }
 
 // Items the scene language has and Value (value.hpp) has no place for yet.
-constexpr std::string_view kUndeclarable[] = {"sky_sphere", "fog", "rainbow", "media",
+constexpr std::string_view kUndeclarable[] = {"fog", "rainbow", "media",
                                               "background"};
 
 // A declared material is held as its texture until Value can hold a material.
@@ -95,6 +95,8 @@ bool parse_item(Parser& parser, Value& out) {
     set_item(out, parse_texture(parser, defaults));
   } else if (at_word(parser, "material")) {
     set_item(out, parse_declared_material(parser));
+  } else if (at_word(parser, "sky_sphere")) {
+    set_item(out, parse_sky_sphere(parser));
   } else if (at_any_word(parser, kUndeclarable)) {
     parser.fail_here("a " + parser.peek().text +
                      " cannot be declared yet: write it where "

@@ -80,6 +80,17 @@ scene::SkySphere parse_sky_sphere(Parser& parser) {
   const SourceLoc loc = take_keyword(parser);
   Block block(parser, "sky_sphere", loc);
   scene::SkySphere sky;
+  // A declared sky_sphere to start from: `sky_sphere { S_Cloud1 }` (skies.inc), whose
+  // pigments further ones are layered on and whose placement further transforms move.
+  if (const Value* declared = parser.peek_declared()) {
+    const auto* base = declared->get<std::shared_ptr<const scene::SkySphere>>();
+    if (base == nullptr) {
+      parser.fail_here("expected a sky_sphere, found '" + parser.peek().text + "' (" +
+                       type_name(*declared) + ")");
+    }
+    sky = **base;
+    parser.next();
+  }
   static constexpr std::string_view kWords[] = {"pigment", "emission", "translate", "rotate",
                                                 "scale",   "matrix",   "transform"};
   while (block.more()) {
