@@ -68,6 +68,15 @@ struct TriangleMesh {
   std::optional<Vec3> inside_vector;
 };
 
+// POV-Ray's `poly`, `cubic`, `quartic` and `quadric`: the surface where the polynomial
+// sum c x^i y^j z^k (i + j + k <= order) is zero, inside where it is negative. The terms are
+// in POV-Ray's order: x's exponent descending, then y's, then z's (quartic: x^4, x^3 y,
+// x^3 z, x^3, x^2 y^2, x^2 y z, ..., z, 1): (order + 1)(order + 2)(order + 3) / 6 of them.
+struct Polynomial {
+  int order = 2;
+  std::vector<double> coefficients;
+};
+
 // A texture given to one component of a blob or convolution object: `index` counts the
 // components in the order the scene listed them (all kinds together).
 struct ComponentTexture {
@@ -95,7 +104,7 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
-                           Implicit, Csg>;
+                           Implicit, Csg, Polynomial>;
 
 // A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
 // empty stand-in, so that include files declaring such objects still work; placing it in the

@@ -35,13 +35,18 @@ constexpr ShapeKeyword kShapes[] = {
     {"merge", parse_csg},
     {"blob", parse_blob},
     {"convolution", parse_convolution},
+    {"poly", parse_polynomial},
+    {"cubic", parse_polynomial},
+    {"quartic", parse_polynomial},
+    {"quadric", parse_polynomial},
     {"object", parse_object_statement},
 };
 
 constexpr std::string_view kObjectWords[] = {
     "sphere",       "box",        "plane",           "cylinder", "cone",        "torus",
     "disc",         "triangle",   "smooth_triangle", "mesh",     "mesh2",       "union",
-    "intersection", "difference", "merge",           "blob",     "convolution", "object"};
+    "intersection", "difference", "merge",           "blob",     "convolution", "object",
+    "poly",         "cubic",      "quartic",         "quadric"};
 
 // The declared object named by the next token (consumed), or null when it names none.
 scene::ObjectPtr declared_object(Parser& parser) {
@@ -96,10 +101,9 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 }
 
 constexpr std::string_view kUnsupportedObjects[] = {
-    "text",       "lathe",        "prism",         "sor",           "superellipsoid",
-    "quadric",    "poly",         "cubic",         "quartic",       "polynomial",
-    "isosurface", "parametric",   "julia_fractal", "bicubic_patch", "height_field",
-    "polygon",    "sphere_sweep", "ovus",          "lemon"};
+    "text",       "lathe",         "prism",         "sor",          "superellipsoid",
+    "polynomial", "isosurface",    "parametric",    "julia_fractal", "bicubic_patch",
+    "height_field", "polygon",     "sphere_sweep",  "ovus",          "lemon"};
 
 }  // namespace
 
