@@ -45,8 +45,8 @@ USAGE
 
 die() { echo "compare-examples.sh: $*" >&2; exit 1; }
 
-# One scene, both renderers: `compare-examples.sh --job SCENE` (run by xargs below). Writes
-# OUT/results/ID.tsv: status, PSNR, POV-Ray's seconds, convray's seconds, detail.
+# One scene, both renderers: `compare-examples.sh --job SCENE --results DIR` (run by xargs
+# below). Writes DIR/ID.tsv: status, PSNR, POV-Ray's seconds, convray's seconds, detail.
 run_job() {
   local scene=$1 id=$2
   local pov_dir="$out/povray" our_dir="$out/convray" work="$out/work/$id"
@@ -112,7 +112,7 @@ run_job() {
     fi
   fi
   printf '%s\t%s\t%s\t%s\t%s\n' "$status" "$psnr" "$pov_seconds" "$our_seconds" \
-    "${detail//$'\t'/ }" >"$out/results/$id.tsv"
+    "${detail//$'\t'/ }" >"$results/$id.tsv"
 }
 
 # The error convray stopped on: its last unindented line with a file:line:col (or any
@@ -139,6 +139,7 @@ out=out/examples
 doc=""
 fresh=0
 job=""
+results=""
 scenes=()
 while (($#)); do
   case "$1" in
@@ -150,6 +151,7 @@ while (($#)); do
     --doc) doc=${2:?--doc needs a file}; shift 2 ;;
     --fresh) fresh=1; shift ;;
     --job) job=${2:?}; shift 2 ;;
+    --results) results=${2:?}; shift 2 ;;
     -*) usage >&2; die "unknown option '$1'" ;;
     *) scenes+=("$1"); shift ;;
   esac
@@ -171,17 +173,19 @@ if ((${#scenes[@]} == 0)); then
   mapfile -t scenes < <(find "$examples" -name '*.pov' | LC_ALL=C sort)
 fi
 [[ -n $doc ]] || { ((everything)) && doc=docs/compatibility.md || doc="$out/compatibility.md"; }
-mkdir -p "$out/povray" "$out/convray" "$out/results" "$out/work"
-rm -f "$out"/results/*.tsv
+mkdir -p "$out/povray" "$out/convray" "$out/work"
+# This run's results, apart from any other run's on the same OUT.
+results=$(mktemp -d "$out/results.XXXXXX")
 
 echo "compare-examples.sh: ${#scenes[@]} scenes, $jobs at once, ${limit} s each" >&2
 start=$(date +%s)
 printf '%s\0' "${scenes[@]}" |
   xargs -0 -P "$jobs" -I{} bash scripts/compare-examples.sh --job {} --timeout "$limit" \
-    --build "$build" --out "$out" $( ((fresh)) && echo --fresh)
+    --build "$build" --out "$out" --results "$results" $( ((fresh)) && echo --fresh)
 minutes=$(awk -v s="$(( $(date +%s) - start ))" 'BEGIN { printf "%.1f", s / 60 }')
 
-python3 scripts/compatibility_report.py "$out" "$examples" "$minutes" "$jobs" "$limit" \
+python3 scripts/compatibility_report.py "$results" "$examples" "$minutes" "$jobs" "$limit" \
   "${scenes[@]}" >"$doc"
+rm -rf "$results"
 echo "compare-examples.sh: wrote $doc ($minutes min)" >&2
 sed -n '/^| status/,/^$/p' "$doc" >&2

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes docs/compatibility.md from the per-scene results of scripts/compare-examples.sh.
 
-usage: compatibility_report.py OUT EXAMPLES MINUTES JOBS LIMIT SCENE.pov...
-Each OUT/results/ID.tsv holds: status, PSNR, POV-Ray's seconds, convray's seconds, detail.
+usage: compatibility_report.py RESULTS EXAMPLES MINUTES JOBS LIMIT SCENE.pov...
+Each RESULTS/ID.tsv holds: status, PSNR, POV-Ray's seconds, convray's seconds, detail.
 """
 import collections
 import datetime
@@ -40,10 +40,10 @@ def command_output(*command):
 
 
 def main():
-    out, examples, minutes, jobs, limit, *scenes = sys.argv[1:]
+    results, examples, minutes, jobs, limit, *scenes = sys.argv[1:]
     rows = []
     for scene in scenes:
-        path = os.path.join(out, "results", scene_id(scene, examples) + ".tsv")
+        path = os.path.join(results, scene_id(scene, examples) + ".tsv")
         try:
             with open(path) as f:
                 status, psnr, pov_s, our_s, detail = f.read().rstrip("\n").split("\t", 4)

@@ -64,6 +64,15 @@ implicit::Ray cylinder(const scene::Camera& camera, double u, double v) {
   }
 }
 
+implicit::Ray ultra_wide_angle(const scene::Camera& camera, double u, double v) {
+  const Frame f = frame_of(camera);
+  const double a = u * camera.angle * kDegree;
+  const double b = v * camera.angle * (f.up_length / f.right_length) * kDegree;
+  const Vec3 direction =
+      std::sin(a) * f.r + std::sin(b) * f.u + std::cos(a) * std::cos(b) * f.d;
+  return {camera.location, glm::normalize(direction)};
+}
+
 }  // namespace
 
 std::optional<implicit::Ray> wide_projection_ray(const scene::Camera& camera, double u,
@@ -77,6 +86,8 @@ std::optional<implicit::Ray> wide_projection_ray(const scene::Camera& camera, do
       return spherical(camera, u, v);
     case scene::Camera::Kind::cylinder:
       return cylinder(camera, u, v);
+    case scene::Camera::Kind::ultra_wide_angle:
+      return ultra_wide_angle(camera, u, v);
     default:
       return std::nullopt;
   }

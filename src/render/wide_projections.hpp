@@ -12,6 +12,8 @@
 //   cylinder 2 u |R| R^ + sin(v angle) U^ + cos(v angle) D^        (horizontal, fixed eye)
 //   cylinder 3 as 1 without the U^ term, from location + v |U| U^  (eye along the axis)
 //   cylinder 4 as 2 without the R^ term, from location + u |R| R^
+//   ultra_wide_angle  with a = u angle, b = v angle |U| / |R|:
+//              sin(a) R^ + sin(b) U^ + cos(a) cos(b) D^
 #include <optional>
 
 #include "implicit/ray.hpp"

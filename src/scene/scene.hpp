@@ -18,11 +18,14 @@ namespace convray::scene {
 // location + x0 * right + y0 * up along `direction`.
 struct Camera {
   // POV-Ray's projections (render/wide_projections.hpp for the wide ones).
-  enum class Kind { perspective, orthographic, fisheye, panoramic, spherical, cylinder };
+  enum class Kind {
+    perspective, orthographic, fisheye, panoramic, spherical, cylinder, ultra_wide_angle
+  };
   Kind kind = Kind::perspective;
   int cylinder_type = 1;  // cylinder: 1 to 4
   // The wide projections' field of view in degrees: horizontal (spherical, cylinder 1 and
-  // 3), vertical (cylinder 2 and 4) or across the image circle (fisheye); `vertical_angle`
+  // 3, ultra_wide_angle), vertical (cylinder 2 and 4) or across the image circle (fisheye);
+  // `vertical_angle`
   // is spherical's second angle.
   double angle = 0.0, vertical_angle = 0.0;
   Vec3 location{0.0, 0.0, 0.0};

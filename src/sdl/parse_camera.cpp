@@ -1,5 +1,5 @@
 // camera { [CAMERA_ID] [perspective | orthographic | fisheye | panoramic | spherical |
-//          cylinder N] location, look_at, right, up, direction, sky, angle, transforms }
+//          cylinder N | ultra_wide_angle] location, look_at, right, up, direction, sky, angle, transforms }
 //
 // The wide projections keep their angle (spherical: two) for the renderer instead of
 // lengthening the direction; without one they span 90 degrees (spherical: 360 and 180).
@@ -58,12 +58,12 @@ CameraItems items_of(const scene::Camera& camera) {
 
 constexpr std::string_view kCameraWords[] = {
     "perspective", "orthographic", "fisheye",     "panoramic",  "spherical", "cylinder",
+    "ultra_wide_angle",
     "location",    "look_at",      "right",       "up",         "direction", "sky",
     "angle",       "translate",    "rotate",      "scale",      "matrix",    "transform",
     "aperture",    "blur_samples", "focal_point", "confidence", "variance",  "normal"};
 
-constexpr std::string_view kUnsupportedProjections[] = {"ultra_wide_angle", "omnimax",
-                                                        "mesh_camera", "stereo"};
+constexpr std::string_view kUnsupportedProjections[] = {"omnimax", "mesh_camera", "stereo"};
 
 bool is_wide(scene::Camera::Kind kind) {
   return kind != scene::Camera::Kind::perspective && kind != scene::Camera::Kind::orthographic;
@@ -108,10 +108,12 @@ void parse_camera_item(Parser& parser, Block& block, CameraItems& items) {
   } else if (word == "perspective" || word == "orthographic") {
     items.kind = word == "perspective" ? scene::Camera::Kind::perspective
                                        : scene::Camera::Kind::orthographic;
-  } else if (word == "fisheye" || word == "panoramic" || word == "spherical") {
+  } else if (word == "fisheye" || word == "panoramic" || word == "spherical" ||
+             word == "ultra_wide_angle") {
     items.kind = word == "fisheye"     ? scene::Camera::Kind::fisheye
                  : word == "panoramic" ? scene::Camera::Kind::panoramic
-                                       : scene::Camera::Kind::spherical;
+                 : word == "spherical" ? scene::Camera::Kind::spherical
+                                       : scene::Camera::Kind::ultra_wide_angle;
   } else if (word == "cylinder") {
     items.kind = scene::Camera::Kind::cylinder;
     const SourceLoc type_at = parser.peek().loc;
@@ -161,8 +163,8 @@ void apply_angle(Parser& parser, CameraItems& items) {
 void set_wide_angles(Parser& parser, const CameraItems& items, scene::Camera& camera) {
   camera.cylinder_type = items.cylinder_type;
   const bool spherical = items.kind == scene::Camera::Kind::spherical;
-  // Without an angle POV-Ray's fisheye and cylinder cameras span 90 degrees (seen in the
-  // directions of its rays), whatever right and direction say.
+  // Without an angle POV-Ray's fisheye, cylinder and ultra_wide_angle cameras span 90
+  // degrees (seen in the directions of its rays), whatever right and direction say.
   camera.angle = items.angle.value_or(spherical ? 360.0 : 90.0);
   camera.vertical_angle = items.vertical_angle.value_or(spherical ? 0.5 * camera.angle : 0.0);
   if (!(camera.angle > 0.0 && camera.angle <= 360.0) || camera.vertical_angle < 0.0 ||

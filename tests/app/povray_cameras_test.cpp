@@ -1,6 +1,6 @@
-// POV-Ray's wide cameras (fisheye, panoramic, spherical, cylinder 1 to 4) against POV-Ray's
-// pictures of one small scene: a checkered floor, coloured balls all around and a sky
-// gradient, seen through each projection.
+// POV-Ray's wide cameras (fisheye, panoramic, spherical, cylinder 1 to 4, ultra_wide_angle)
+// against POV-Ray's pictures of one small scene: a checkered floor, coloured balls all
+// around and a sky gradient, seen through each projection.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -37,7 +37,10 @@ INSTANTIATE_TEST_SUITE_P(WideProjections, PovRayCameras,
                                            "panoramic", "spherical angle 360, 180",
                                            "spherical angle 240", "cylinder 1 angle 120",
                                            "cylinder 2 angle 90", "cylinder 3 angle 150",
-                                           "cylinder 4 angle 100", "cylinder 1"));
+                                           "cylinder 4 angle 100", "cylinder 1",
+                                           "ultra_wide_angle angle 220",
+                                           "ultra_wide_angle angle 100 up 1.5 * y",
+                                           "ultra_wide_angle"));
 
 }  // namespace
 }  // namespace convray::testing
