@@ -5,9 +5,17 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
+# The --examples mode (every scene of Debian's povray-examples, writing docs/compatibility.md)
+# has its own script: its per-scene jobs run in parallel.
+if [[ ${1:-} == --examples ]]; then
+  shift
+  exec bash scripts/compare-examples.sh "$@"
+fi
+
 usage() {
   cat <<'USAGE'
 usage: bash scripts/compare-povray.sh [OPTIONS] [SCENE.pov ...]
+       bash scripts/compare-povray.sh --examples [-h | EXAMPLE OPTIONS]
 
 Without scenes: POV-Ray's own blob samples from the Debian package povray-examples
 (scenes/objects/blob.pov, blob1a.pov, blob1b.pov, blob1c.pov). Each is rendered by
@@ -16,6 +24,9 @@ without anti-aliasing, and compared with idiff. Goal (issue 4): PSNR >= 40 dB fo
 sphere-only blobs, >= 30 dB where cylinder components are involved.
 
 Output (git-ignored): OUT/<name>_povray.png, OUT/<name>_convray.png, logs, OUT/compare.md.
+
+--examples: every example scene of povray-examples, both renderers, into
+docs/compatibility.md (scripts/compare-examples.sh; --examples -h for its options).
 
 Options:
   --size WxH      image size (default 800x600)

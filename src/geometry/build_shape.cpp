@@ -13,6 +13,7 @@
 #include "geometry/implicit_shape.hpp"
 #include "geometry/modifiers.hpp"
 #include "geometry/plane.hpp"
+#include "geometry/polynomial_surface.hpp"
 #include "geometry/sphere.hpp"
 #include "geometry/torus.hpp"
 #include "geometry/transformed.hpp"
@@ -55,6 +56,7 @@ class ShapeBuilder {
   ShapePtr make(const scene::Cylinder& c, const Inherited& own) const;
   ShapePtr make(const scene::Cone& c, const Inherited& own) const;
   ShapePtr make(const scene::Torus& t, const Inherited& own) const;
+  ShapePtr make(const scene::Polynomial& p, const Inherited& own) const;
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
   ShapePtr make(const scene::TriangleMesh& m, const Inherited& own) const;
   ShapePtr make(const scene::Implicit& i, const Inherited& own) const;
@@ -114,6 +116,12 @@ ShapePtr ShapeBuilder::make(const scene::Torus& t, const Inherited& own) const {
   require(finite(t.major) && finite(t.minor), "torus: the radii must be finite");
   require(t.major > 0.0 && t.minor > 0.0, "torus: the radii must be positive");
   return std::make_unique<TorusShape>(t.major, t.minor, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Polynomial& p, const Inherited& own) const {
+  require(p.order >= 1 && p.order <= kMaxPolynomialDegree, "poly: the order must be 1 to 8");
+  for (double c : p.coefficients) require(std::isfinite(c), "poly: coefficients must be finite");
+  return std::make_unique<PolynomialSurface>(p.order, p.coefficients, surface_for(own));
 }
 
 ShapePtr ShapeBuilder::make(const scene::Disc& d, const Inherited& own) const {

@@ -70,6 +70,8 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::World& world,
 
 Vec3 Integrator::trace_camera_ray(const Ray& ray, RenderStats& stats) const {
   ++stats.camera_rays;
+  // A camera with no ray there (outside a fisheye's circle): black, as in POV-Ray.
+  if (ray.direction == Vec3(0.0)) return Vec3(0.0);
   return trace(ray, RayState{}, 0.0, stats);
 }
 

@@ -144,9 +144,33 @@ double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& patt
   }
   const double raw = raw_pattern_value(space, q);
   if (space.pattern == Pattern::checker || shapes_its_own_wave(space.pattern)) return raw;
-  const double v = raw * space.frequency + space.phase;
-  if (space.pattern == Pattern::marble || space.pattern == Pattern::wood) return triangle_wave(v);
-  return wrap_to_unit(v);
+  return shaped_by_wave(space, raw * space.frequency + space.phase);
+}
+
+double shaped_by_wave(const scene::PatternSpace& space, double v) {
+  using scene::Wave;
+  Wave wave = space.wave;
+  if (wave == Wave::pattern_default) {
+    const bool triangular = space.pattern == Pattern::marble || space.pattern == Pattern::wood;
+    wave = triangular ? Wave::triangle : Wave::ramp;
+  }
+  // The shapes as the povray binary draws them over a gradient (tests/render).
+  switch (wave) {
+    case Wave::triangle:
+      return triangle_wave(v);
+    case Wave::sine:
+      return 0.5 * (1.0 + std::sin(2.0 * kPi * v));
+    case Wave::scallop:
+      return std::abs(std::sin(kPi * v));
+    case Wave::cubic: {
+      const double t = wrap_to_unit(v);
+      return t * t * (3.0 - 2.0 * t);
+    }
+    case Wave::poly:
+      return std::pow(wrap_to_unit(v), space.wave_exponent);
+    default:
+      return wrap_to_unit(v);
+  }
 }
 
 }  // namespace convray::render

@@ -35,6 +35,10 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& pattern_p
 // The triangle wave of period 1: 0 at integers, 1 at half-integers, linear between.
 double triangle_wave(double v);
 
+// v = value * frequency + phase reshaped by the space's wave type (POV-Ray's ramp_wave,
+// triangle_wave, sine_wave, scallop_wave, cubic_wave, poly_wave E): in [0, 1].
+double shaped_by_wave(const scene::PatternSpace& space, double v);
+
 // POV-Ray's checker block index (0 or 1) at a pattern-space point.
 int checker_block(const Vec3& pattern_point);
 

@@ -121,6 +121,23 @@ void decode_assumed_gamma(double gamma, Film& film) {
   }
 }
 
+// POV-Ray 3.7 renders scenes older than 3.7 without assumed_gamma with gamma correction off:
+// a computed 0.3 is written as the byte 77, not as its sRGB encoding 149. The film holds
+// linear light that the image writer encodes, so such a film is decoded here: the writer's
+// encoding then gives back the computed value.
+void turn_gamma_correction_off(Film& film) {
+  const auto decode = [](double c) {
+    if (!(c > 0.0)) return 0.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  for (int j = 0; j < film.height(); ++j) {
+    for (int i = 0; i < film.width(); ++i) {
+      const Vec3 c = film.at(i, j);
+      film.set(i, j, Vec3(decode(c.x), decode(c.y), decode(c.z)));
+    }
+  }
+}
+
 }  // namespace
 
 double automatic_ray_offset(const scene::Scene& scene, const geometry::World& world) {
@@ -147,6 +164,7 @@ RenderResult render_scene(const scene::Scene& scene, const geometry::World& worl
   render_centres(integrator, camera, settings, progress, result);
   if (settings.antialias) antialias(integrator, camera, settings, result);
   decode_assumed_gamma(scene.settings.assumed_gamma, result.film);
+  if (!scene.settings.gamma_correction) turn_gamma_correction_off(result.film);
   if (progress) progress->finish();
   return result;
 }

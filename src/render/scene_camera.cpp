@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "render/wide_projections.hpp"
+
 namespace convray::render {
 
 SceneCamera::SceneCamera(const scene::Camera& camera, int width, int height)
@@ -19,6 +21,11 @@ SceneCamera::SceneCamera(const scene::Camera& camera, int width, int height)
 }
 
 implicit::Ray SceneCamera::ray_through(double x0, double y0) const {
+  using Kind = scene::Camera::Kind;
+  if (camera_.kind != Kind::perspective && camera_.kind != Kind::orthographic) {
+    const std::optional<implicit::Ray> ray = wide_projection_ray(camera_, x0, y0);
+    return ray ? *ray : implicit::Ray{camera_.location, Vec3(0.0)};
+  }
   const Vec3 offset = x0 * camera_.right + y0 * camera_.up;
   if (camera_.kind == scene::Camera::Kind::orthographic) {
     return implicit::Ray{camera_.location + offset, glm::normalize(camera_.direction)};

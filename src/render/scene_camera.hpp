@@ -6,6 +6,8 @@
 // centre (i + 0.5, j + 0.5) as POV-Ray 3.7 does without anti-aliasing (see camera.hpp).
 //   perspective:  from location along normalize(direction + x0 right + y0 up)
 //   orthographic: from location + x0 right + y0 up along normalize(direction)
+//   fisheye, panoramic, spherical, cylinder: wide_projections.hpp; where a projection has no
+//   ray (outside a fisheye's circle) the ray's direction is zero, and the pixel is black.
 #include "implicit/ray.hpp"
 #include "scene/scene.hpp"
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -67,6 +68,15 @@ struct TriangleMesh {
   std::optional<Vec3> inside_vector;
 };
 
+// POV-Ray's `poly`, `cubic`, `quartic` and `quadric`: the surface where the polynomial
+// sum c x^i y^j z^k (i + j + k <= order) is zero, inside where it is negative. The terms are
+// in POV-Ray's order: x's exponent descending, then y's, then z's (quartic: x^4, x^3 y,
+// x^3 z, x^3, x^2 y^2, x^2 y z, ..., z, 1): (order + 1)(order + 2)(order + 3) / 6 of them.
+struct Polynomial {
+  int order = 2;
+  std::vector<double> coefficients;
+};
+
 // A texture given to one component of a blob or convolution object: `index` counts the
 // components in the order the scene listed them (all kinds together).
 struct ComponentTexture {
@@ -94,10 +104,19 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
-                           Implicit, Csg>;
+                           Implicit, Csg, Polynomial>;
+
+// A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
+// empty stand-in, so that include files declaring such objects still work; placing it in the
+// scene (itself, or inside CSG) is an error that names it.
+struct UnsupportedObject {
+  std::string kind;  // the POV-Ray keyword
+  SourceLoc declared_at;
+};
 
 struct Object {
   Shape shape;
+  std::optional<UnsupportedObject> unsupported;
   Transform transform;      // own space -> world (or parent CSG space)
   TexturePtr texture;       // null: inherited from the CSG parent, else the default texture
   std::optional<Interior> interior;

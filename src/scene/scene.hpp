@@ -17,8 +17,17 @@ namespace convray::scene {
 // along direction + x0 * right + y0 * up; for an orthographic one from
 // location + x0 * right + y0 * up along `direction`.
 struct Camera {
-  enum class Kind { perspective, orthographic };
+  // POV-Ray's projections (render/wide_projections.hpp for the wide ones).
+  enum class Kind {
+    perspective, orthographic, fisheye, panoramic, spherical, cylinder, ultra_wide_angle
+  };
   Kind kind = Kind::perspective;
+  int cylinder_type = 1;  // cylinder: 1 to 4
+  // The wide projections' field of view in degrees: horizontal (spherical, cylinder 1 and
+  // 3, ultra_wide_angle), vertical (cylinder 2 and 4) or across the image circle (fisheye);
+  // `vertical_angle`
+  // is spherical's second angle.
+  double angle = 0.0, vertical_angle = 0.0;
   Vec3 location{0.0, 0.0, 0.0};
   Vec3 direction{0.0, 0.0, 1.0};
   Vec3 right{1.33, 0.0, 0.0};
@@ -66,6 +75,9 @@ struct Fog {
 
 struct GlobalSettings {
   double assumed_gamma = 1.0;  // POV-Ray 3.7 scenes say 1.0; anything else is warned about
+  // POV-Ray 3.7 turns gamma correction off for older scenes (no #version, or one below 3.7)
+  // that give no assumed_gamma: their colours are written as computed, not sRGB-encoded.
+  bool gamma_correction = true;
   int max_trace_level = 5;
   Vec3 ambient_light{1.0};
   double adc_bailout = 1.0 / 255.0;

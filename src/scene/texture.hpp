@@ -51,6 +51,10 @@ struct Turbulence {
   bool active() const { return amount != Vec3(0.0); }
 };
 
+// POV-Ray's wave types: how a pattern's value v = value * frequency + phase becomes the
+// value looked up in the map. `pattern_default`: triangle for marble and wood, ramp otherwise.
+enum class Wave { pattern_default, ramp, triangle, sine, scallop, cubic, poly };
+
 // What every pattern shares: where it is evaluated and how its value is reshaped.
 struct PatternSpace {
   Pattern pattern = Pattern::solid;
@@ -58,6 +62,8 @@ struct PatternSpace {
   Turbulence turbulence;
   double frequency = 1.0;  // value -> fract(value * frequency + phase)
   double phase = 0.0;
+  Wave wave = Wave::pattern_default;
+  double wave_exponent = 1.0;  // poly_wave's
   Transform transform;     // pattern space -> world
 };
 

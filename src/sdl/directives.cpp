@@ -42,6 +42,7 @@ void Parser::Impl::run_directive() {
     case Word::version: {
       const TokenRef value_at = ref();
       language_version = to_float(parse_expression(), value_at, "after #version");
+      version_given = true;
       accept_optional_semicolon();
       return;
     }
@@ -173,7 +174,14 @@ void Parser::Impl::directive_declare(bool local, TokenRef) {
   }
   Value value = parse_rvalue();
   value.loc = loc(name_at);
-  store(scope, name, std::move(value));
+  if (const Alias* alias = innermost_alias(name)) {
+    // A macro parameter passed by reference: #declare and #local both assign the caller's
+    // variable, as in POV-Ray.
+    const Alias target = *alias;
+    store_through(target, std::move(value), name_at);
+  } else {
+    store(scope, name, std::move(value));
+  }
   if (!macros.empty()) macros.erase(name);
   if (!functions.empty()) functions.erase(name);
   if (deprecation) deprecations[name] = std::move(*deprecation);

@@ -54,12 +54,22 @@ Arity arity_of(Word word) {
   }
 }
 
-// SplitMix64: a small, well-mixed deterministic generator for seed() and rand().
-std::uint64_t split_mix(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
+// POV-Ray 3.7's rand(): a 32-bit linear congruential generator, state = 1812433253 * state +
+// 12345 (mod 2^32), each number the new state over 2^32 - 1 (so 0 and 1 can both occur).
+// Derived from the numbers the povray binary prints (seed(0) starts 12345 / (2^32 - 1));
+// tests/sdl/povray_rand_test.cpp compares thousands of draws with it.
+double next_povray_random(std::uint32_t& state) {
+  state = state * 1812433253u + 12345u;
+  return double(state) / 4294967295.0;
+}
+
+// seed(v)'s starting state: v truncated to a 32-bit integer, as POV-Ray does; values outside
+// the int range (and NaN) all give the state 2^31, as the povray binary shows (seed(1e12) and
+// seed(-2147483649) draw what seed(2147483648) draws).
+std::uint32_t povray_seed_state(double v) {
+  const double t = std::trunc(v);
+  if (!(t >= -2147483648.0 && t <= 2147483647.0)) return 0x80000000u;
+  return std::uint32_t(std::int32_t(t));
 }
 
 }  // namespace
@@ -69,8 +79,7 @@ double Parser::Impl::next_random(double stream, TokenRef at) {
   if (!(index >= 0.0 && index < double(random_streams.size()))) {
     fail(at, "rand() needs a stream made by seed(), found " + number_text(stream));
   }
-  // 53 random bits: uniform in [0, 1).
-  return double(split_mix(random_streams[size_t(index)]) >> 11) * 0x1.0p-53;
+  return next_povray_random(random_streams[size_t(index)]);
 }
 
 Value Parser::Impl::call_builtin(const LexToken& name, TokenRef at) {
@@ -223,9 +232,7 @@ Value Parser::Impl::call_builtin(const LexToken& name, TokenRef at) {
       break;
     }
     case Word::seed: {
-      std::uint64_t state = std::uint64_t(std::int64_t(to_int(arg(0), at, what)));
-      split_mix(state);  // decorrelate neighbouring seeds
-      random_streams.push_back(state);
+      random_streams.push_back(povray_seed_state(arg(0)));
       result = double(random_streams.size() - 1);
       break;
     }

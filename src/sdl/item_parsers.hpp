@@ -31,6 +31,9 @@ void parse_top_level_object(Parser& parser, scene::Scene& scene);
 // A top-level object without a texture gets the #default texture in force where it ends, as
 // in POV-Ray (CSG children without one inherit their parent's instead, in geometry/).
 scene::ObjectPtr with_default_texture(Parser& parser, scene::ObjectPtr object);
+// An object placed in the scene at `at`: with the default texture if it has none; an error if
+// it is, or contains, a declared stand-in for an unsupported object (`sor`, `text`, ...).
+scene::ObjectPtr placed_object(Parser& parser, scene::ObjectPtr object, const SourceLoc& at);
 
 scene::ObjectPtr parse_sphere(Parser& parser);
 scene::ObjectPtr parse_box(Parser& parser);
@@ -38,6 +41,7 @@ scene::ObjectPtr parse_plane(Parser& parser);
 scene::ObjectPtr parse_cylinder(Parser& parser);
 scene::ObjectPtr parse_cone(Parser& parser);
 scene::ObjectPtr parse_torus(Parser& parser);
+scene::ObjectPtr parse_polynomial(Parser& parser);  // poly, cubic, quartic, quadric
 scene::ObjectPtr parse_disc(Parser& parser);
 scene::ObjectPtr parse_triangle(Parser& parser);  // triangle and smooth_triangle
 scene::ObjectPtr parse_mesh(Parser& parser);

@@ -43,7 +43,7 @@ constexpr std::string_view kStatementWords[] = {
 }
 
 // Items the scene language has and Value (value.hpp) has no place for yet.
-constexpr std::string_view kUndeclarable[] = {"sky_sphere", "fog", "rainbow", "media",
+constexpr std::string_view kUndeclarable[] = {"fog", "rainbow", "media",
                                               "background"};
 
 // A declared material is held as its texture until Value can hold a material.
@@ -95,6 +95,8 @@ bool parse_item(Parser& parser, Value& out) {
     set_item(out, parse_texture(parser, defaults));
   } else if (at_word(parser, "material")) {
     set_item(out, parse_declared_material(parser));
+  } else if (at_word(parser, "sky_sphere")) {
+    set_item(out, parse_sky_sphere(parser));
   } else if (at_any_word(parser, kUndeclarable)) {
     parser.fail_here("a " + parser.peek().text +
                      " cannot be declared yet: write it where "
@@ -128,12 +130,46 @@ scene::ObjectPtr items::with_default_texture(Parser& parser, scene::ObjectPtr ob
   return textured;
 }
 
+namespace {
+
+// The first stand-in for an unsupported object in `object`'s tree (CSG children, clipping and
+// bounding objects), or null.
+const scene::UnsupportedObject* find_unsupported(const scene::Object& object) {
+  if (object.unsupported) return &*object.unsupported;
+  const auto in = [](const scene::ObjectPtr& child) {
+    return child ? find_unsupported(*child) : nullptr;
+  };
+  if (const auto* csg = std::get_if<scene::Csg>(&object.shape)) {
+    for (const scene::ObjectPtr& child : csg->children) {
+      if (const auto* found = in(child)) return found;
+    }
+  }
+  for (const scene::ObjectPtr& clip : object.clipped_by) {
+    if (const auto* found = in(clip)) return found;
+  }
+  return in(object.bounded_by);
+}
+
+}  // namespace
+
+scene::ObjectPtr items::placed_object(Parser& parser, scene::ObjectPtr object,
+                                      const SourceLoc& at) {
+  if (const scene::UnsupportedObject* unsupported = find_unsupported(*object)) {
+    parser.fail(at, "'" + unsupported->kind +
+                        "' objects are not supported yet by convray: this object uses the one "
+                        "declared at " +
+                        unsupported->declared_at.str());
+  }
+  return with_default_texture(parser, std::move(object));
+}
+
 void parse_statement(Parser& parser, scene::Scene& scene) {
   using namespace items;
   if (at_word(parser, "object")) {
     parse_top_level_object(parser, scene);
   } else if (at_object(parser)) {
-    scene.objects.push_back(with_default_texture(parser, parse_object(parser)));
+    const SourceLoc loc = parser.peek().loc;
+    scene.objects.push_back(placed_object(parser, parse_object(parser), loc));
   } else if (at_word(parser, "camera")) {
     scene.camera = parse_camera(parser);
   } else if (at_word(parser, "light_source")) {

@@ -2,17 +2,20 @@
 //
 // A macro body is a range of the defining file's tokens, replayed in a new frame when the
 // macro is called; its parameters are #local values of a new scope, so #local inside the
-// body is local to the call. Arguments are passed by value (POV-Ray passes a bare identifier
-// by reference, so that a macro can assign to its caller's variable; here such an assignment
-// changes only the macro's copy). A parameter marked `optional` may be left out; it is then
-// not declared in the body (test it with #ifdef).
+// body is local to the call. As in POV-Ray, an argument that is a bare identifier or array
+// element (`M(A)`, `M(Arr[i])`) is passed by reference: the parameter is an Alias of the
+// caller's variable, which #declare and #local of the parameter assign; any other expression
+// is passed by value. A parameter marked `optional` may be left out; it is then not declared
+// in the body (test it with #ifdef).
 //
 // `#declare F = function (a, b) { expression }` keeps the body's tokens the same way; a call
 // F(1, 2) evaluates the expression in a sealed frame (the expression may not run past the
 // closing brace) with a and b bound. Without a parameter list the parameters are x, y, z.
 #include <algorithm>
+#include <optional>
 #include <string>
 
+#include "sdl/diagnostics.hpp"
 #include "sdl/parser_impl.hpp"
 
 namespace convray::sdl {
@@ -81,6 +84,7 @@ void Parser::Impl::call_macro(std::shared_ptr<const Macro> macro, TokenRef at) {
   NestingLevel level(*this);  // arguments may call macros: M(M(M(...)))
   expect_symbol('(', "after the macro name '" + name + "'");
   std::vector<Value> arguments(wanted);
+  std::vector<std::optional<Alias>> references(wanted);
   std::size_t count = 0;
   if (!accept_symbol(')')) {
     ScopedValue not_in_vector(angle_depth, 0);
@@ -103,7 +107,8 @@ void Parser::Impl::call_macro(std::shared_ptr<const Macro> macro, TokenRef at) {
                "missing argument '" + macro->parameters[count].name + "' of macro '" + name + "'");
         }
       } else {
-        arguments[count] = parse_rvalue();
+        references[count] = parse_reference_argument();
+        if (!references[count]) arguments[count] = parse_rvalue();
       }
       ++count;
       if (accept_symbol(',')) continue;
@@ -120,7 +125,9 @@ void Parser::Impl::call_macro(std::shared_ptr<const Macro> macro, TokenRef at) {
   }
   const std::uint64_t scope = push_scope();
   for (std::size_t i = 0; i < wanted; ++i) {
-    if (arguments[i].is_set()) {
+    if (references[i]) {
+      scopes.back().aliases.insert_or_assign(macro->parameters[i].name, std::move(*references[i]));
+    } else if (arguments[i].is_set()) {
       scopes.back().values.insert_or_assign(macro->parameters[i].name, std::move(arguments[i]));
     }
   }
@@ -128,6 +135,52 @@ void Parser::Impl::call_macro(std::shared_ptr<const Macro> macro, TokenRef at) {
   frame.scope = scope;
   frame.name = name;
   ++macro_depth;
+}
+
+// At a bare identifier or array element that ends the argument (`A,`, `A)`, `A[i][j])`):
+// decided on the tokens alone, before anything is evaluated.
+bool Parser::Impl::reference_argument_ahead() const {
+  const Frame& frame = frames.back();
+  const auto& tokens = frame.file->tokens;
+  if (frame.pos >= frame.end || tokens[frame.pos].kind != LexKind::identifier) return false;
+  std::uint32_t i = frame.pos + 1;
+  while (i < frame.end && is_symbol(tokens[i], '[')) {
+    int depth = 0;
+    for (; i < frame.end; ++i) {
+      if (tokens[i].kind == LexKind::directive) return false;  // too clever: by value
+      if (is_symbol(tokens[i], '[')) ++depth;
+      if (is_symbol(tokens[i], ']') && --depth == 0) break;
+    }
+    ++i;
+  }
+  return i < frame.end && (is_symbol(tokens[i], ',') || is_symbol(tokens[i], ')'));
+}
+
+// A macro argument passed by reference, read; nullopt (nothing read) for one passed by value.
+// An undeclared identifier or unset element is left to parse_rvalue(), whose error POV-Ray
+// gives too ("Cannot pass uninitialized identifier").
+std::optional<Alias> Parser::Impl::parse_reference_argument() {
+  const LexToken& t = settle();  // runs directives, expands a macro call
+  const Frame& frame = frames.back();
+  if (frame.pos >= frame.end || &t != &frame.file->tokens[frame.pos]) return std::nullopt;
+  if (!reference_argument_ahead()) return std::nullopt;
+  const std::string name(t.view());
+  std::optional<Alias> alias = alias_of(name);
+  const Value* value = alias ? resolve(*alias) : nullptr;
+  if (value == nullptr || !value->is_set()) return std::nullopt;
+  const bool element = frame.pos + 1 < frame.end && is_symbol(frame.file->tokens[frame.pos + 1], '[');
+  if (element && value->get<std::shared_ptr<Array>>() == nullptr) return std::nullopt;
+  const TokenRef at = ref();
+  advance();
+  if (element) {
+    const Value root = *value;  // the path is read before anything changes the variable
+    for (const std::size_t flat : parse_element_path(root, name)) alias->element.push_back(flat);
+    const Value* target = resolve(*alias);
+    if (target == nullptr || !target->is_set()) {
+      fail(at, "an element of " + quoted(name) + " is read before it was given a value");
+    }
+  }
+  return alias;
 }
 
 std::uint32_t Parser::Impl::find_closing_brace(std::uint32_t opened_at) {

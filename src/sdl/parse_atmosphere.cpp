@@ -80,6 +80,17 @@ scene::SkySphere parse_sky_sphere(Parser& parser) {
   const SourceLoc loc = take_keyword(parser);
   Block block(parser, "sky_sphere", loc);
   scene::SkySphere sky;
+  // A declared sky_sphere to start from: `sky_sphere { S_Cloud1 }` (skies.inc), whose
+  // pigments further ones are layered on and whose placement further transforms move.
+  if (const Value* declared = parser.peek_declared()) {
+    const auto* base = declared->get<std::shared_ptr<const scene::SkySphere>>();
+    if (base == nullptr) {
+      parser.fail_here("expected a sky_sphere, found '" + parser.peek().text + "' (" +
+                       type_name(*declared) + ")");
+    }
+    sky = **base;
+    parser.next();
+  }
   static constexpr std::string_view kWords[] = {"pigment", "emission", "translate", "rotate",
                                                 "scale",   "matrix",   "transform"};
   while (block.more()) {
@@ -132,6 +143,7 @@ void parse_global_settings(Parser& parser, scene::GlobalSettings& settings) {
     const SourceLoc item_loc = take_keyword(parser);
     if (word == "assumed_gamma") {
       settings.assumed_gamma = float_param(parser, word);
+      parser.note_assumed_gamma();
       if (settings.assumed_gamma != 1.0) {
         parser.warn(item_loc, "assumed_gamma " + number_text(settings.assumed_gamma) +
                                   ": convray renders as POV-Ray 3.7 does with assumed_gamma 1");

@@ -1,5 +1,8 @@
-// camera { [CAMERA_ID] [perspective | orthographic] location, look_at, right, up, direction,
-//          sky, angle, transforms }
+// camera { [CAMERA_ID] [perspective | orthographic | fisheye | panoramic | spherical |
+//          cylinder N | ultra_wide_angle] location, look_at, right, up, direction, sky, angle, transforms }
+//
+// The wide projections keep their angle (spherical: two) for the renderer instead of
+// lengthening the direction; without one they span 90 degrees (spherical: 360 and 180).
 //
 // POV-Ray 3.7 reads every camera item first and then builds the frame in a fixed order,
 // whatever order the scene wrote them in:
@@ -32,7 +35,9 @@ struct CameraItems {
   Vec3 sky{0.0, 1.0, 0.0};
   Vec3 look_at{0.0, 0.0, 1.0};
   bool has_look_at = false;
+  int cylinder_type = 1;
   std::optional<double> angle;
+  std::optional<double> vertical_angle;  // spherical's second angle
   SourceLoc angle_loc, look_at_loc;
   scene::Transform transform;
 };
@@ -40,6 +45,9 @@ struct CameraItems {
 CameraItems items_of(const scene::Camera& camera) {
   CameraItems items;
   items.kind = camera.kind;
+  items.cylinder_type = camera.cylinder_type;
+  if (camera.angle > 0.0) items.angle = camera.angle;
+  if (camera.vertical_angle > 0.0) items.vertical_angle = camera.vertical_angle;
   items.location = camera.location;
   items.direction = camera.direction;
   items.right = camera.right;
@@ -49,13 +57,17 @@ CameraItems items_of(const scene::Camera& camera) {
 }
 
 constexpr std::string_view kCameraWords[] = {
-    "perspective", "orthographic", "location",    "look_at",    "right",    "up",     "direction",
-    "sky",         "angle",        "translate",   "rotate",     "scale",    "matrix", "transform",
-    "aperture",    "blur_samples", "focal_point", "confidence", "variance", "normal"};
+    "perspective", "orthographic", "fisheye",     "panoramic",  "spherical", "cylinder",
+    "ultra_wide_angle",
+    "location",    "look_at",      "right",       "up",         "direction", "sky",
+    "angle",       "translate",    "rotate",      "scale",      "matrix",    "transform",
+    "aperture",    "blur_samples", "focal_point", "confidence", "variance",  "normal"};
 
-constexpr std::string_view kUnsupportedProjections[] = {
-    "fisheye",  "ultra_wide_angle", "omnimax",     "panoramic",
-    "cylinder", "spherical",        "mesh_camera", "stereo"};
+constexpr std::string_view kUnsupportedProjections[] = {"omnimax", "mesh_camera", "stereo"};
+
+bool is_wide(scene::Camera::Kind kind) {
+  return kind != scene::Camera::Kind::perspective && kind != scene::Camera::Kind::orthographic;
+}
 
 // The vector a camera keyword sets, or null.
 Vec3* vector_item(CameraItems& items, const std::string& word) {
@@ -96,9 +108,27 @@ void parse_camera_item(Parser& parser, Block& block, CameraItems& items) {
   } else if (word == "perspective" || word == "orthographic") {
     items.kind = word == "perspective" ? scene::Camera::Kind::perspective
                                        : scene::Camera::Kind::orthographic;
+  } else if (word == "fisheye" || word == "panoramic" || word == "spherical" ||
+             word == "ultra_wide_angle") {
+    items.kind = word == "fisheye"     ? scene::Camera::Kind::fisheye
+                 : word == "panoramic" ? scene::Camera::Kind::panoramic
+                 : word == "spherical" ? scene::Camera::Kind::spherical
+                                       : scene::Camera::Kind::ultra_wide_angle;
+  } else if (word == "cylinder") {
+    items.kind = scene::Camera::Kind::cylinder;
+    const SourceLoc type_at = parser.peek().loc;
+    items.cylinder_type = int_param(parser, "cylinder camera type");
+    if (items.cylinder_type < 1 || items.cylinder_type > 4) {
+      parser.fail(type_at, "the cylinder camera's type must be 1, 2, 3 or 4, found " +
+                               std::to_string(items.cylinder_type));
+    }
   } else if (word == "angle") {
     items.angle = float_param(parser, "angle");
     items.angle_loc = loc;
+    if (parser.at(",")) {  // spherical: angle H, V
+      parser.accept_comma();
+      items.vertical_angle = float_param(parser, "vertical angle");
+    }
   } else {  // focal blur
     if (word == "focal_point") {
       vector_param(parser, word);
@@ -126,6 +156,21 @@ void apply_angle(Parser& parser, CameraItems& items) {
       items.right *= distance / length;
       items.up *= distance / length;
     }
+  }
+}
+
+// The wide projections' angles, checked; the defaults as POV-Ray's.
+void set_wide_angles(Parser& parser, const CameraItems& items, scene::Camera& camera) {
+  camera.cylinder_type = items.cylinder_type;
+  const bool spherical = items.kind == scene::Camera::Kind::spherical;
+  // Without an angle POV-Ray's fisheye, cylinder and ultra_wide_angle cameras span 90
+  // degrees (seen in the directions of its rays), whatever right and direction say.
+  camera.angle = items.angle.value_or(spherical ? 360.0 : 90.0);
+  camera.vertical_angle = items.vertical_angle.value_or(spherical ? 0.5 * camera.angle : 0.0);
+  if (!(camera.angle > 0.0 && camera.angle <= 360.0) || camera.vertical_angle < 0.0 ||
+      camera.vertical_angle > 360.0) {
+    parser.fail(items.angle_loc, "camera angle must lie in (0, 360] degrees, found " +
+                                     number_text(camera.angle));
   }
 }
 
@@ -171,13 +216,15 @@ scene::Camera parse_camera(Parser& parser) {
     items = items_of(*declared);
   while (block.more()) parse_camera_item(parser, block, items);
 
-  if (items.angle) apply_angle(parser, items);
+  const bool wide = is_wide(items.kind);
+  if (items.angle && !wide) apply_angle(parser, items);
   if (items.has_look_at) apply_look_at(parser, items);
   for (const Vec3* v : {&items.direction, &items.right, &items.up}) {
     if (*v == Vec3(0.0)) parser.fail(loc, "camera direction, right and up must not be 0");
   }
   scene::Camera camera;
   camera.kind = items.kind;
+  if (wide) set_wide_angles(parser, items, camera);
   camera.location = items.transform.point(items.location);
   camera.direction = items.transform.vector(items.direction);
   camera.right = items.transform.vector(items.right);

@@ -73,8 +73,16 @@ void parse_ignored_light_item(Parser& parser, const std::string& word, const Sou
   } else if (word == "photons") {
     skip_braced(parser, word, loc);
   } else {
-    optional_bool(parser);  // media_interaction, media_attenuation, area_illumination
-    if (word != "area_illumination") return;  // no media in convray: nothing to ignore
+    const bool on = optional_bool(parser);  // media_interaction, media_attenuation, area_...
+    if (word == "media_attenuation" && on) {
+      // What it asks for (shadows dimmed by the media they cross) needs media, which convray
+      // leaves out (each medium with its own warning).
+      warn_once(parser, loc,
+                "'media_attenuation' is ignored by convray: it renders no media, so this "
+                "light's shadow rays are not dimmed by media");
+      return;
+    }
+    if (word != "area_illumination") return;  // media_interaction: no media, nothing to do
   }
   warn_once(parser, loc, "'" + word + "' is ignored by convray");
 }

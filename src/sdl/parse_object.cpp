@@ -35,13 +35,18 @@ constexpr ShapeKeyword kShapes[] = {
     {"merge", parse_csg},
     {"blob", parse_blob},
     {"convolution", parse_convolution},
+    {"poly", parse_polynomial},
+    {"cubic", parse_polynomial},
+    {"quartic", parse_polynomial},
+    {"quadric", parse_polynomial},
     {"object", parse_object_statement},
 };
 
 constexpr std::string_view kObjectWords[] = {
     "sphere",       "box",        "plane",           "cylinder", "cone",        "torus",
     "disc",         "triangle",   "smooth_triangle", "mesh",     "mesh2",       "union",
-    "intersection", "difference", "merge",           "blob",     "convolution", "object"};
+    "intersection", "difference", "merge",           "blob",     "convolution", "object",
+    "poly",         "cubic",      "quartic",         "quadric"};
 
 // The declared object named by the next token (consumed), or null when it names none.
 scene::ObjectPtr declared_object(Parser& parser) {
@@ -96,10 +101,9 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 }
 
 constexpr std::string_view kUnsupportedObjects[] = {
-    "text",       "lathe",        "prism",         "sor",           "superellipsoid",
-    "quadric",    "poly",         "cubic",         "quartic",       "polynomial",
-    "isosurface", "parametric",   "julia_fractal", "bicubic_patch", "height_field",
-    "polygon",    "sphere_sweep", "ovus",          "lemon"};
+    "text",       "lathe",         "prism",         "sor",          "superellipsoid",
+    "polynomial", "isosurface",    "parametric",    "julia_fractal", "bicubic_patch",
+    "height_field", "polygon",     "sphere_sweep",  "ovus",          "lemon"};
 
 }  // namespace
 
@@ -146,7 +150,7 @@ void parse_top_level_object(Parser& parser, scene::Scene& scene) {
     }
     base = *object;
   }
-  scene.objects.push_back(with_default_texture(parser, parse_object_body(parser, block, base)));
+  scene.objects.push_back(placed_object(parser, parse_object_body(parser, block, base), loc));
 }
 
 scene::ObjectPtr parse_unsupported_object_as_empty(Parser& parser) {
@@ -155,10 +159,11 @@ scene::ObjectPtr parse_unsupported_object_as_empty(Parser& parser) {
   skip_braced(parser, word, loc);
   warn_once(parser, loc,
             "'" + word +
-                "' objects are not supported yet by convray: declared ones are empty "
-                "(nothing is drawn where they are used)");
+                "' objects are not supported yet by convray: declaring one is accepted, "
+                "placing it in the scene is an error");
   scene::Object empty;
   empty.shape = scene::Csg{scene::CsgOperation::union_, {}};
+  empty.unsupported = scene::UnsupportedObject{word, loc};
   empty.loc = loc;
   return std::make_shared<const scene::Object>(std::move(empty));
 }

@@ -200,8 +200,25 @@ scene::Scene Parser::parse_scene() {
       impl_->fail_here("expected a statement, found " + impl_->describe(impl_->settle()));
     }
   }
+  apply_legacy_gamma(scene);
   return scene;
 }
+
+// POV-Ray 3.7's rule, as its binary shows: a scene without assumed_gamma whose language
+// version, when the parse ends, is below 3.7 (or that never said #version: include files
+// that set and restore #version count as saying it) is rendered without gamma correction,
+// with this warning (POV-Ray's words).
+void Parser::apply_legacy_gamma(scene::Scene& scene) {
+  if (impl_->assumed_gamma_given) return;
+  if (impl_->version_given && impl_->language_version >= 3.7 - 1e-9) return;
+  scene.settings.gamma_correction = false;
+  impl_->warn(SourceLoc{impl_->files.front()->name},
+              "assumed_gamma not specified, so gamma_correction is turned off for "
+              "compatibility with this pre POV-Ray 3.7 scene (as in POV-Ray 3.7: colours are "
+              "written as computed, without the sRGB encoding)");
+}
+
+void Parser::note_assumed_gamma() { impl_->assumed_gamma_given = true; }
 
 const Token& Parser::peek() { return impl_->materialize(); }
 

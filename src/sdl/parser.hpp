@@ -72,6 +72,9 @@ class Parser {
 
   // --- Context.
   const ParseOptions& options() const;
+  // global_settings gave assumed_gamma: POV-Ray's gamma rule for scenes older than 3.7
+  // (applied when the scene ends) does not apply.
+  void note_assumed_gamma();
   Defaults& defaults();
   // A file named in the scene (mesh, include), resolved as POV-Ray resolves includes: the
   // scene's folder, the +L paths, the installed include folder. Fails at `loc` if not found.
@@ -107,6 +110,8 @@ class Parser {
   struct Impl;
 
  private:
+  void apply_legacy_gamma(scene::Scene& scene);
+
   std::unique_ptr<Impl> impl_;
 };
 

@@ -25,6 +25,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -84,9 +85,18 @@ struct Frame {
   std::string name;         // macro or function name, for messages
 };
 
+// A macro parameter passed by reference (POV-Ray passes an argument that is a bare identifier
+// or array element that way): the caller's variable, or an element of its array, itself.
+struct Alias {
+  std::uint64_t scope = 0;          // serial of the scope that holds the variable
+  std::string name;                 // the variable's name there
+  std::vector<std::size_t> element; // the element's path in the variable's array; empty: all
+};
+
 struct Scope {
   std::uint64_t serial = 0;
   NameMap<Value> values;
+  NameMap<Alias> aliases;  // names that stand for another scope's variable; never in values
 };
 
 struct MacroParameter {
@@ -135,10 +145,12 @@ struct Parser::Impl {
   NameMap<std::shared_ptr<const UserFunction>> functions;
   NameMap<Deprecation> deprecations;
   const LexToken* last_deprecated_use = nullptr;
-  std::vector<std::uint64_t> random_streams;
+  std::vector<std::uint32_t> random_streams;  // the states of seed()'s streams
   std::vector<std::string> warnings;
   std::map<std::string, Value> globals_view;
   double language_version = 3.7;
+  bool version_given = false;        // a #version directive was read
+  bool assumed_gamma_given = false;  // global_settings { assumed_gamma ... } was read
 
   int nesting_depth = 0;
   int macro_depth = 0, include_depth = 0, function_depth = 0;
@@ -239,6 +251,8 @@ struct Parser::Impl {
   void directive_macro(TokenRef at);
   bool expand_if_macro(const LexToken& name);
   void call_macro(std::shared_ptr<const Macro> macro, TokenRef at);
+  std::optional<Alias> parse_reference_argument();
+  bool reference_argument_ahead() const;
   void declare_function(const std::string& name);
   Value call_function(const UserFunction& function, TokenRef at);
   std::uint32_t find_closing_brace(std::uint32_t opened_at);
@@ -297,6 +311,10 @@ struct Parser::Impl {
   void declare_global(std::string_view name, Value value);
   void declare_local(std::string_view name, Value value);
   void store(std::uint64_t scope_serial, std::string_view name, Value value);
+  const Alias* innermost_alias(std::string_view name) const;
+  std::optional<Alias> alias_of(std::string_view name) const;
+  Value* resolve(const Alias& alias);
+  void store_through(const Alias& alias, Value value, TokenRef at);
   std::uint64_t push_scope();
   void pop_scope(std::uint64_t serial);
   bool undeclare(std::string_view name);

@@ -106,13 +106,23 @@ bool parse_pattern_modifier(Parser& parser, scene::PatternSpace& space) {
   } else if (word == "phase") {
     space.phase = float_param(parser, "phase");
   } else if (word == "ramp_wave") {
-    // The default wave: nothing to do.
+    space.wave = scene::Wave::ramp;
+  } else if (word == "triangle_wave") {
+    space.wave = scene::Wave::triangle;
+  } else if (word == "sine_wave") {
+    space.wave = scene::Wave::sine;
+  } else if (word == "scallop_wave") {
+    space.wave = scene::Wave::scallop;
+  } else if (word == "cubic_wave") {
+    space.wave = scene::Wave::cubic;
+  } else if (word == "poly_wave") {
+    space.wave = scene::Wave::poly;
+    space.wave_exponent = at_float_start(parser) ? float_param(parser, "poly_wave") : 1.0;
   } else if (word == "quick_color" || word == "quick_colour") {
     color_param(parser);  // a preview colour: irrelevant to a full render
   } else {
-    // Wave shapes, the noise generator and agate_turb: parsed, and the difference they
-    // make is not rendered.
-    if (word == "poly_wave" && at_float_start(parser)) float_param(parser, "poly_wave");
+    // The noise generator and agate_turb: parsed, and the difference they make is not
+    // rendered.
     if (word == "noise_generator") int_param(parser, "noise_generator");
     if (word == "agate_turb") float_param(parser, "agate_turb");
     warn_once(parser, loc, "'" + word + "' is ignored by convray");

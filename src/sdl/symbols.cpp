@@ -1,5 +1,7 @@
 // Scopes as POV-Ray has them: the global table, then one table per include file and per macro
 // call, searched innermost first. #declare writes the global table, #local the innermost.
+// A macro parameter passed by reference is an Alias in the call's scope: reading it reads the
+// caller's variable, and #declare or #local of it writes the caller's variable.
 #include <algorithm>
 
 #include "sdl/diagnostics.hpp"
@@ -11,8 +13,61 @@ Value* Parser::Impl::lookup(std::string_view name) {
   for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
     const auto found = scope->values.find(name);
     if (found != scope->values.end()) return &found->second;
+    if (scope->aliases.empty()) continue;
+    const auto alias = scope->aliases.find(name);
+    if (alias != scope->aliases.end()) return resolve(alias->second);
   }
   return nullptr;
+}
+
+const Alias* Parser::Impl::innermost_alias(std::string_view name) const {
+  for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
+    if (scope->values.find(name) != scope->values.end()) return nullptr;
+    const auto alias = scope->aliases.find(name);
+    if (alias != scope->aliases.end()) return &alias->second;
+  }
+  return nullptr;
+}
+
+std::optional<Alias> Parser::Impl::alias_of(std::string_view name) const {
+  if (const Alias* alias = innermost_alias(name)) return *alias;  // a reference passed on
+  for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
+    if (scope->values.find(name) != scope->values.end()) {
+      return Alias{scope->serial, std::string(name), {}};
+    }
+  }
+  return std::nullopt;
+}
+
+Value* Parser::Impl::resolve(const Alias& alias) {
+  for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
+    if (scope->serial != alias.scope) continue;
+    const auto found = scope->values.find(alias.name);
+    if (found == scope->values.end()) return nullptr;  // #undef'd since
+    Value* cursor = &found->second;
+    for (const std::size_t flat : alias.element) {
+      const auto* array = cursor->get<std::shared_ptr<Array>>();
+      if (array == nullptr || *array == nullptr || flat >= (*array)->elements.size()) {
+        return nullptr;  // no longer the array it was
+      }
+      cursor = &(*array)->elements[flat];
+    }
+    return cursor;
+  }
+  return nullptr;
+}
+
+void Parser::Impl::store_through(const Alias& alias, Value value, TokenRef at) {
+  if (alias.element.empty()) return store(alias.scope, alias.name, std::move(value));
+  for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
+    if (scope->serial != alias.scope) continue;
+    const auto found = scope->values.find(alias.name);
+    if (found == scope->values.end()) {
+      fail(at, quoted(alias.name) + ", whose element was passed to the macro, is undeclared");
+    }
+    *element_at(found->second, alias.element, true, alias.name, at) = std::move(value);
+    return;
+  }
 }
 
 const Value* Parser::Impl::lookup(std::string_view name) const {
@@ -29,6 +84,13 @@ void Parser::Impl::store(std::uint64_t scope_serial, std::string_view name, Valu
   // after the lookahead left the macro, and the value would have died with it anyway.
   for (auto scope = scopes.rbegin(); scope != scopes.rend(); ++scope) {
     if (scope->serial != scope_serial) continue;
+    if (!scope->aliases.empty()) {
+      const auto alias = scope->aliases.find(name);
+      if (alias != scope->aliases.end()) {
+        const Alias target = alias->second;
+        return store_through(target, std::move(value), ref());
+      }
+    }
     const auto found = scope->values.find(name);
     if (found != scope->values.end()) {
       found->second = std::move(value);
@@ -64,6 +126,11 @@ bool Parser::Impl::undeclare(std::string_view name) {
       scope->values.erase(found);
       return true;
     }
+    // #undef of a parameter passed by reference forgets the parameter, not the variable.
+    if (const auto alias = scope->aliases.find(name); alias != scope->aliases.end()) {
+      scope->aliases.erase(alias);
+      return true;
+    }
   }
   if (const auto macro = macros.find(name); macro != macros.end()) {
     macros.erase(macro);
@@ -94,6 +161,7 @@ std::string Parser::Impl::did_you_mean(std::string_view name) const {
   };
   for (const Scope& scope : scopes) {
     for (const auto& entry : scope.values) consider(entry.first);
+    for (const auto& entry : scope.aliases) consider(entry.first);
   }
   for (const auto& entry : macros) consider(entry.first);
   for (const auto& entry : functions) consider(entry.first);

@@ -35,6 +35,9 @@ std::string type_name(const Value& value) {
     std::string operator()(const std::shared_ptr<const scene::Light>&) const {
       return "a light_source";
     }
+    std::string operator()(const std::shared_ptr<const scene::SkySphere>&) const {
+      return "a sky_sphere";
+    }
   };
   return std::visit(Namer{}, value.data);
 }

@@ -48,7 +48,8 @@ struct Value {
                std::shared_ptr<const ColorMap>,
                std::shared_ptr<const scene::Transform>,
                std::shared_ptr<const scene::Camera>,
-               std::shared_ptr<const scene::Light>>
+               std::shared_ptr<const scene::Light>,
+               std::shared_ptr<const scene::SkySphere>>
       data;
   SourceLoc loc;  // where it was computed or declared, for messages
 

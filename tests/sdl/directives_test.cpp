@@ -87,7 +87,7 @@ TEST(Directives, Undef) {
 }
 
 TEST(Directives, UndefOfAnUndeclaredNameWarns) {
-  const ParseResult result = run("#undef Nothing");
+  const ParseResult result = run("#undef Nothing\n#version 3.7;");  // 3.7: no gamma warning
   ASSERT_EQ(result.warnings.size(), 1u);
   EXPECT_EQ(result.warnings[0].substr(0, result.warnings[0].find('\n')),
             "test.pov:1:8: #undef of 'Nothing', which is not declared");
@@ -104,7 +104,7 @@ TEST(Directives, DebugAndWarningGoToWarnings) {
   const ParseResult result =
       run("#debug \"plain text\\n\"\n"
           "#declare N = 3;\n"
-          "#warning concat(\"N is \", str(N, 0, 0))\n");
+          "#warning concat(\"N is \", str(N, 0, 0))\n#version 3.7;\n");
   ASSERT_EQ(result.warnings.size(), 2u);
   EXPECT_EQ(result.warnings[0], "test.pov:1:1: #debug: plain text");
   EXPECT_EQ(result.warnings[1].substr(0, result.warnings[1].find('\n')), "test.pov:3:1: N is 3");
@@ -122,7 +122,7 @@ TEST(Directives, ErrorFailsAtItsLocation) {
 TEST(Directives, DeprecatedIdentifiersWarnWhenUsed) {
   const ParseResult result =
       run("#declare deprecated once \"use New\" Old = 1;\n"
-          "#declare A = Old + Old;\n");
+          "#declare A = Old + Old;\n#version 3.7;\n");
   EXPECT_EQ(global_float(result, "A"), 2.0);
   ASSERT_EQ(result.warnings.size(), 1u);  // once
   EXPECT_NE(result.warnings[0].find("test.pov:2:14: 'Old' is deprecated: use New"),

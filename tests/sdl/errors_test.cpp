@@ -66,7 +66,7 @@ TEST(Errors, UnknownDirectives) {
                        "unknown directive '#delcare' (did you mean '#declare'?)"));
   EXPECT_TRUE(fails_at(scene_error("#frobnicate"), 1, 1, "unknown directive '#frobnicate'"));
   // A '#' with no name is passed over, as POV-Ray does, with a warning.
-  const ParseResult stray = core_testing::run("#declare V = <0, 2, 0>; # \n#declare W = 1;");
+  const ParseResult stray = core_testing::run("#declare V = <0, 2, 0>; # \n#declare W = 1;\n#version 3.7;");
   ASSERT_EQ(stray.warnings.size(), 1u);
   EXPECT_EQ(stray.warnings[0].substr(0, stray.warnings[0].find('\n')),
             "test.pov:1:25: '#' without a directive name, ignored");

@@ -155,7 +155,8 @@ TEST(ItemsCamera, Errors) {
   EXPECT_TRUE(fails_with("camera { angle 180 }", 1, 10, "strictly between 0 and 180"));
   EXPECT_TRUE(
       fails_with("camera { location 1 look_at 1 }", 1, 21, "look_at is the camera's location"));
-  EXPECT_TRUE(fails_with("camera { fisheye }", 1, 10, "not supported yet"));
+  EXPECT_TRUE(fails_with("camera { omnimax }", 1, 10, "not supported yet"));
+  EXPECT_TRUE(fails_with("camera { cylinder 5 }", 1, 19, "must be 1, 2, 3 or 4"));
   EXPECT_TRUE(fails_with("camera { loaction 0 }", 1, 10, "did you mean 'location'?"));
   EXPECT_TRUE(fails_with("camera { location 0 direction 0 }", 1, 1,
                          "camera direction, right and up must not be 0"));

@@ -134,6 +134,30 @@ TEST(ItemsAtmosphere, GlobalSettings) {
   EXPECT_FALSE(has_warning(result, "assumed_gamma"));
 }
 
+TEST(ItemsLight, MediaAttenuationSaysWhatIsLeftOut) {
+  // convray renders no media: shadows dimmed by media cannot be drawn, and the warning says so.
+  EXPECT_TRUE(has_warning(parse("light_source { <0, 5, 0> rgb 1 media_attenuation on }"),
+                          "shadow rays are not dimmed by media"));
+  EXPECT_FALSE(has_warning(parse("light_source { <0, 5, 0> rgb 1 media_attenuation off }"),
+                           "media"));
+  EXPECT_FALSE(has_warning(parse("light_source { <0, 5, 0> rgb 1 media_interaction off }"),
+                           "media"));
+}
+
+TEST(ItemsAtmosphere, OlderScenesWithoutAssumedGammaAreNotGammaCorrected) {
+  // POV-Ray 3.7's rule (tests/app/povray_gamma_test.cpp compares the pictures with povray's).
+  const auto no_version = parse("sphere { 0, 1 }");
+  EXPECT_FALSE(no_version.scene.settings.gamma_correction);
+  EXPECT_TRUE(has_warning(no_version, "assumed_gamma not specified, so gamma_correction is "
+                                      "turned off"));
+  EXPECT_FALSE(parse("#version 3.6; sphere { 0, 1 }").scene.settings.gamma_correction);
+  EXPECT_TRUE(parse("#version 3.6; sphere { 0, 1 } #version 3.7;").scene.settings.gamma_correction);
+  EXPECT_TRUE(parse("#version 3.7; sphere { 0, 1 }").scene.settings.gamma_correction);
+  const auto given = parse("#version 3.5; global_settings { assumed_gamma 1 }");
+  EXPECT_TRUE(given.scene.settings.gamma_correction);
+  EXPECT_FALSE(has_warning(given, "gamma_correction"));
+}
+
 TEST(ItemsAtmosphere, AssumedGammaOtherThanOneIsWarnedAbout) {
   const auto result = parse("global_settings { assumed_gamma 2.2 }");
   EXPECT_TRUE(has_warning(result, "convray renders as POV-Ray 3.7 does with assumed_gamma 1"));

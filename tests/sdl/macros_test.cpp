@@ -52,8 +52,10 @@ TEST(Macros, MacrosSeeTheirCallersLocals) {
             40.0);
 }
 
-TEST(Macros, ArgumentsArePassedByValue) {
-  EXPECT_EQ(declared("#declare A = 1; #macro M(P) #local P = 99; #end M(A)", "A"), 1.0);
+TEST(Macros, IdentifiersArePassedByReferenceExpressionsByValue) {
+  // POV-Ray 3.7's rule (tests/sdl/povray_macro_reference_test.cpp checks it against povray).
+  EXPECT_EQ(declared("#declare A = 1; #macro M(P) #local P = 99; #end M(A)", "A"), 99.0);
+  EXPECT_EQ(declared("#declare A = 1; #macro M(P) #local P = 99; #end M(A * 1)", "A"), 1.0);
 }
 
 TEST(Macros, Recursion) {

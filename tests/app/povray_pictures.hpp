@@ -1,0 +1,71 @@
+#pragma once
+// Whole scenes rendered by the installed POV-Ray 3.7 and by the convray binary with the same
+// switches (small, without anti-aliasing), compared pixel by pixel: PSNR over the 8-bit RGB
+// values, as scripts/compare-povray.sh --examples measures. Tests skip without povray.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace convray::testing {
+
+inline bool povray_installed() {
+  static const bool installed = std::system("povray --version > /dev/null 2>&1") == 0;
+  return installed;
+}
+
+#define SKIP_WITHOUT_POVRAY()                                                 \
+  if (!::convray::testing::povray_installed())                               \
+  GTEST_SKIP() << "povray is not installed (scripts/setup.sh installs it); " \
+                  "this test compares with POV-Ray 3.7's own picture"
+
+// 8-bit RGB values of a picture; empty if it cannot be read.
+inline std::vector<unsigned char> read_rgb8(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return {};
+  const OIIO::ImageSpec& spec = in->spec();
+  std::vector<unsigned char> pixels(size_t(spec.width) * spec.height * 3);
+  const bool read = in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data());
+  in->close();
+  return read ? pixels : std::vector<unsigned char>{};
+}
+
+// 99 for identical pictures; -1 if they differ in size or cannot be read.
+inline double psnr(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
+  if (a.empty() || a.size() != b.size()) return -1.0;
+  double sum = 0.0;
+  for (size_t k = 0; k < a.size(); ++k) sum += (double(a[k]) - b[k]) * (double(a[k]) - b[k]);
+  const double mse = sum / double(a.size());
+  return mse == 0.0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
+}
+
+class PovRayPictureTest : public CliTest {
+ protected:
+  // Renders `scene` (written as NAME.pov in the test's folder) with both programs at 80x60,
+  // -A; returns the PSNR of convray's picture against POV-Ray's. `convray_err` gets our
+  // messages, `povray_messages` POV-Ray's warnings.
+  double compare(const std::string& name, const std::string& scene) {
+    std::ofstream(file(name + ".pov")) << scene;
+    const std::string switches = " +W80 +H60 -A -D +WT1";
+    const std::string pov = "cd '" + dir_.string() + "' && povray +I" + name + ".pov +O" + name +
+                            "_pov.png" + switches + " -GA +GW" + name +
+                            "_pov.txt > /dev/null 2>&1";
+    if (std::system(pov.c_str()) != 0) ADD_FAILURE() << "povray failed on " << name;
+    povray_messages = read_file(dir_ / (name + "_pov.txt"));
+    const CliRun ours = run_convray_after("cd '" + dir_.string() + "' && ",
+                                          "+I" + name + ".pov +O" + name + "_our.png" + switches);
+    EXPECT_EQ(ours.exit_code, 0) << ours.err;
+    convray_err = ours.err;
+    return psnr(read_rgb8(file(name + "_pov.png")), read_rgb8(file(name + "_our.png")));
+  }
+
+  std::string convray_err, povray_messages;
+};
+
+}  // namespace convray::testing
