@@ -145,6 +145,7 @@ int run_field(const FieldOptions& options, std::istream& in, std::ostream& out, 
   try {
     if (!options.scene_path.empty()) return run_scene_field(options, in, out, err);
     const mesh::LoadedMesh loaded = mesh::load_mesh(options.mesh_path);
+    mesh::require_triangles(loaded, options.mesh_path, "field");
     const implicit::MeshField field(soup_triangles(loaded.soup), options.radius, options.strength);
     return answer_points([&](const Vec3& p) { return field.field(p); }, in, out, err);
   } catch (const InputError& e) {

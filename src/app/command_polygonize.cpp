@@ -41,6 +41,7 @@ struct PreparedField {
 
 PreparedField prepare_mesh(const PolygonizeOptions& o) {
   mesh::LoadedMesh loaded = mesh::load_mesh(o.input);
+  mesh::require_triangles(loaded, o.input, "polygonize");
   if (o.fit_box) mesh::fit_into_box(loaded.soup, *o.fit_box);
   PreparedField prepared;
   prepared.radius = o.radius ? *o.radius : mesh::advised_radius(mesh::compute_stats(loaded.soup));

@@ -58,6 +58,7 @@ struct QuickObject {
 // threshold resolved.
 QuickObject load_object(const QuickOptions& o) {
   mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
+  mesh::require_triangles(loaded, o.mesh_path, "quick");
   if (o.fit_box) mesh::fit_into_box(loaded.soup, *o.fit_box);
   QuickObject model;
   model.radius = o.radius ? *o.radius : mesh::advised_radius(mesh::compute_stats(loaded.soup));

@@ -8,6 +8,7 @@ namespace convray::sdl {
 
 SharedTriangles MeshLibrary::read(const std::string& path) {
   const mesh::LoadedMesh loaded = mesh::load_mesh(path);
+  mesh::require_triangles(loaded, path, "a convolution mesh");
   auto triangles = std::make_shared<std::vector<field::Triangle>>();
   triangles->reserve(loaded.soup.size());
   for (size_t t = 0; t < loaded.soup.size(); ++t) {

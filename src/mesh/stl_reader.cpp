@@ -1,8 +1,18 @@
-#include "mesh/stl_check.hpp"
-
+// STL, text and binary. Binary: an 80-byte header of anything, a little-endian uint32
+// triangle count, then 50 bytes per triangle (normal, three corners as float32, two bytes
+// of attributes); the file is binary when its size is exactly 84 + 50 x count. Text: `solid
+// NAME`, facets (`facet normal n n n`, `outer loop`, three `vertex x y z`, `endloop`,
+// `endfacet`), `endsolid`; any number of solids, empty ones included, one after the other.
+// A text file that starts with "solid" but whose size fits its count is binary: binary headers
+// often start with "solid" too.
+//
+// Every corner is its own vertex (STL shares none); the normals are not read: the
+// triangles' winding says which side is out.
 #include <array>
+#include <cstring>
 
 #include "mesh/load_error.hpp"
+#include "mesh/readers.hpp"
 #include "mesh/text_scan.hpp"
 
 namespace convray::mesh {
@@ -10,11 +20,37 @@ namespace {
 
 constexpr uint64_t kBinaryHeaderSize = 84;  // 80 bytes of anything, then a uint32 count
 constexpr uint64_t kBinaryTriangleSize = 50;
-constexpr size_t kMaxSolidNameLength = 1000;  // assimp refuses names of 1024 bytes or more
 
-uint32_t binary_triangle_count(std::string_view bytes) {
-  const auto* count = reinterpret_cast<const unsigned char*>(bytes.data() + 80);
-  return uint32_t{count[0]} | uint32_t{count[1]} << 8 | uint32_t{count[2]} << 16 | uint32_t{count[3]} << 24;
+uint32_t little_endian_uint32(const char* at) {
+  const auto* b = reinterpret_cast<const unsigned char*>(at);
+  return uint32_t{b[0]} | uint32_t{b[1]} << 8 | uint32_t{b[2]} << 16 | uint32_t{b[3]} << 24;
+}
+
+float little_endian_float(const char* at) {
+  uint32_t bits = little_endian_uint32(at);
+  float value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
+uint32_t binary_triangle_count(std::string_view bytes) { return little_endian_uint32(bytes.data() + 80); }
+
+PolygonMesh read_binary(std::string_view bytes, uint64_t triangle_count) {
+  PolygonMesh mesh;
+  mesh.format = "STL binary";
+  mesh.vertex_per_corner = true;
+  mesh.vertices.reserve(3 * triangle_count);
+  for (uint64_t t = 0; t < triangle_count; ++t) {
+    const char* corners = bytes.data() + kBinaryHeaderSize + kBinaryTriangleSize * t + 12;  // after the normal
+    for (int k = 0; k < 3; ++k) {
+      const char* at = corners + 12 * k;
+      mesh.vertices.emplace_back(little_endian_float(at), little_endian_float(at + 4), little_endian_float(at + 8));
+    }
+    const int64_t first = static_cast<int64_t>(3 * t);
+    const int64_t face[3] = {first, first + 1, first + 2};
+    mesh.add_face(face);
+  }
+  return mesh;
 }
 
 size_t skip_white(std::string_view bytes, size_t at) {
@@ -71,30 +107,32 @@ bool is_keyword(std::string_view token) {
   return token.substr(0, 8) == "endsolid";
 }
 
-class AsciiStlWalk {
+class AsciiStlReader {
  public:
-  AsciiStlWalk(std::string_view text, const std::string& file) : tokens_(text), file_(file) {}
+  AsciiStlReader(std::string_view text, const std::string& file) : tokens_(text), file_(file) {
+    mesh_.format = "STL ascii";
+    mesh_.vertex_per_corner = true;
+  }
 
-  uint64_t walk() {
+  PolygonMesh read() {
     std::string_view token;
     while (tokens_.next(token)) {
       if (token != "solid") fail_here("expected 'solid' but found " + quote_token(token));
       read_solid_name();
       while (read_facet_or_end()) ++facets_;
     }
-    return facets_;
+    return std::move(mesh_);
   }
 
  private:
   [[noreturn]] void fail_here(const std::string& what) { fail(file_, "ASCII STL: " + what, tokens_.line()); }
 
-  // `solid` may be followed by a name (assimp keeps the first word) and any other words,
-  // as long as none of them is a keyword that assimp's reader would act on.
+  // `solid` may be followed by a name of any words, as long as none of them is a keyword:
+  // a facet on the `solid` line is a file we would misread.
   void read_solid_name() {
     TokenReader words(tokens_.rest_of_line());
     std::string_view word;
-    for (bool first = true; words.next(word); first = false) {
-      if (first && word.size() > kMaxSolidNameLength) fail_here("the solid's name is longer than 1000 characters");
+    while (words.next(word)) {
       if (is_keyword(word)) fail_here("the solid's name contains the keyword " + quote_token(word));
     }
   }
@@ -114,10 +152,13 @@ class AsciiStlWalk {
     expect("loop");
     for (int corner = 0; corner < 3; ++corner) {
       expect("vertex");
-      read_numbers();
+      mesh_.vertices.push_back(read_numbers());
     }
     expect("endloop");
     expect("endfacet");
+    const int64_t first = static_cast<int64_t>(3 * facets_);
+    const int64_t face[3] = {first, first + 1, first + 2};
+    mesh_.add_face(face);
     return true;
   }
 
@@ -134,13 +175,15 @@ class AsciiStlWalk {
   }
 
   // Three numbers on the line of the keyword before them.
-  void read_numbers() {
+  Vec3 read_numbers() {
+    Vec3 numbers;
     for (int axis = 0; axis < 3; ++axis) {
       std::string_view token;
-      double value = 0.0;
       if (!tokens_.next_on_line(token)) fail_here("expected three numbers on the line" + in_face(facets_));
-      if (!parse_real(token, value)) fail_here("expected a number but found " + quote_token(token) + in_face(facets_));
+      if (!parse_real(token, numbers[axis]))
+        fail_here("expected a number but found " + quote_token(token) + in_face(facets_));
     }
+    return numbers;
   }
 
   std::string_view next_or_truncated() {
@@ -152,30 +195,30 @@ class AsciiStlWalk {
   Tokens tokens_;
   const std::string& file_;
   uint64_t facets_ = 0;
+  PolygonMesh mesh_;
 };
 
 }  // namespace
 
-StlContents check_stl(std::string_view bytes, const std::string& file) {
-  StlContents contents;
+PolygonMesh read_stl(std::string_view bytes, const std::string& file) {
   uint64_t size = bytes.size();
+  uint32_t count = 0;
   if (size >= kBinaryHeaderSize) {
-    contents.triangle_count = binary_triangle_count(bytes);
-    if (kBinaryHeaderSize + kBinaryTriangleSize * contents.triangle_count == size) return contents;
+    count = binary_triangle_count(bytes);
+    if (kBinaryHeaderSize + kBinaryTriangleSize * count == size) return read_binary(bytes, count);
   }
   size_t start = skip_white(bytes, 0);
   if (bytes.substr(start, 5) == "solid" && bytes.find('\0') == std::string_view::npos) {
     size_t at = find_binary_byte(bytes);
     if (at != std::string_view::npos) fail(file, "the ASCII STL contains a control byte at offset " + std::to_string(at));
-    std::string_view text = bytes.substr(start);
-    return {StlEncoding::Ascii, AsciiStlWalk(text, file).walk(), start};
+    return AsciiStlReader(bytes.substr(start), file).read();
   }
   if (size < kBinaryHeaderSize)
     fail(file, "not an STL file: too short for a binary STL (" + std::to_string(size) +
                    " bytes, the header alone is 84) and not ASCII STL (it does not start with 'solid')");
-  uint64_t expected = kBinaryHeaderSize + kBinaryTriangleSize * contents.triangle_count;
-  fail(file, "binary STL of the wrong size: the header declares " + std::to_string(contents.triangle_count) +
-                 " triangles, which take 84 + 50 x " + std::to_string(contents.triangle_count) + " = " +
+  uint64_t expected = kBinaryHeaderSize + kBinaryTriangleSize * uint64_t{count};
+  fail(file, "binary STL of the wrong size: the header declares " + std::to_string(count) +
+                 " triangles, which take 84 + 50 x " + std::to_string(count) + " = " +
                  std::to_string(expected) + " bytes, but the file has " + std::to_string(size) + " bytes" +
                  (size < expected ? " (the file is truncated)" : ""));
 }
