@@ -12,14 +12,11 @@
 // coordinates) is skipped. `#` starts a comment that runs to the end of its line. 4OFF's
 // fourth coordinate w divides the other three. A file with no faces is a point cloud.
 //
-// Binary OFF (`OFF BINARY`, the data right after that line): big-endian int32 counts, then
-// per vertex its float32s (3, or 4 with w; 3 more for N, 4 for C, 2 for ST), per face an int32
-// corner count, the int32 indices, an int32 colour count and that many float32s.
-#include <bit>
+// Binary OFF (`OFF BINARY`) is read by src/mesh/off_binary.cpp.
 #include <cmath>
-#include <cstring>
 
 #include "mesh/load_error.hpp"
+#include "mesh/off_binary.hpp"
 #include "mesh/readers.hpp"
 #include "mesh/text_scan.hpp"
 
@@ -27,20 +24,6 @@ namespace convray::mesh {
 namespace {
 
 constexpr uint64_t kMaxCount = 0xffffffffu;
-
-// What the keyword's prefixes say about each vertex.
-struct OffLayout {
-  bool texture = false;      // ST: two texture coordinates
-  bool colour = false;       // C: a colour
-  bool normal = false;       // N: three normal components
-  bool homogeneous = false;  // 4: a fourth coordinate w
-  bool dimension = false;    // n: the dimension comes before the counts
-  bool binary = false;
-
-  int coordinates() const { return homogeneous ? 4 : 3; }
-  // Binary only: the float32s per vertex (colours are RGBA there).
-  uint64_t floats_per_vertex() const { return coordinates() + (normal ? 3 : 0) + (colour ? 4 : 0) + (texture ? 2 : 0); }
-};
 
 struct OffCounts {
   uint64_t vertices = 0, faces = 0;
@@ -109,7 +92,7 @@ class OffReader {
 
   PolygonMesh read() {
     std::string_view glued = read_keyword();
-    if (layout_.binary) return read_binary(tokens_.start_of_next_line());
+    if (layout_.binary) return read_binary_off(bytes_, tokens_.start_of_next_line(), layout_, file_);
     reject_control_bytes();
     if (layout_.dimension) read_dimension(glued);
     OffCounts counts = read_counts(layout_.dimension ? std::string_view() : glued);
@@ -241,8 +224,6 @@ class OffReader {
     return index;
   }
 
-  PolygonMesh read_binary(size_t start);
-
   std::string_view bytes_;
   OffTokens tokens_;
   const std::string& file_;
@@ -250,77 +231,6 @@ class OffReader {
   PolygonMesh mesh_;
   std::vector<int64_t> corners_;
 };
-
-// ---- Binary ---------------------------------------------------------------------------
-
-// Big-endian 32-bit words, each checked to be there.
-class BigEndianWords {
- public:
-  BigEndianWords(std::string_view bytes, size_t offset, const std::string& file)
-      : bytes_(bytes), offset_(offset), file_(file) {}
-
-  uint32_t word(const std::string& where) {
-    if (remaining_words() < 1) fail(file_, "the binary OFF data ends early (the file is truncated)" + where);
-    const auto* b = reinterpret_cast<const unsigned char*>(bytes_.data() + offset_);
-    offset_ += 4;
-    return uint32_t{b[0]} << 24 | uint32_t{b[1]} << 16 | uint32_t{b[2]} << 8 | uint32_t{b[3]};
-  }
-  int32_t integer(const std::string& where) { return static_cast<int32_t>(word(where)); }
-  float real(const std::string& where) { return std::bit_cast<float>(word(where)); }
-  void skip(uint64_t words, const std::string& where) {
-    if (words > remaining_words()) fail(file_, "the binary OFF data ends early (the file is truncated)" + where);
-    offset_ += static_cast<size_t>(4 * words);
-  }
-  uint64_t remaining_words() const { return (bytes_.size() - offset_) / 4; }
-
- private:
-  std::string_view bytes_;
-  size_t offset_;
-  const std::string& file_;
-};
-
-PolygonMesh OffReader::read_binary(size_t start) {
-  if (layout_.dimension) fail(file_, "binary nOFF is not supported");
-  mesh_.format = "OFF binary";
-  BigEndianWords in(bytes_, start, file_);
-  const int32_t counts[2] = {in.integer(" (header)"), in.integer(" (header)")};
-  in.integer(" (header)");  // edges
-  if (counts[0] < 0 || counts[1] < 0) fail(file_, "the binary OFF header has a negative count");
-  const auto vertex_count = static_cast<uint64_t>(counts[0]);
-  if (vertex_count > in.remaining_words() / layout_.floats_per_vertex())
-    fail(file_, "the binary OFF data ends before its " + std::to_string(vertex_count) +
-                    " vertices (the file is truncated)");
-  mesh_.vertices.reserve(vertex_count);
-  for (uint64_t v = 0; v < vertex_count; ++v) {
-    double values[4] = {0.0, 0.0, 0.0, 1.0};
-    for (int k = 0; k < layout_.coordinates(); ++k) values[k] = in.real(in_vertex(v));
-    in.skip(layout_.floats_per_vertex() - static_cast<uint64_t>(layout_.coordinates()), in_vertex(v));
-    if (!std::isfinite(values[0] + values[1] + values[2] + values[3]))
-      fail(file_, "vertex has a non-finite coordinate" + in_vertex(v));
-    if (values[3] == 0.0) fail(file_, "4OFF vertex with w = 0 (a point at infinity)" + in_vertex(v));
-    mesh_.vertices.emplace_back(values[0] / values[3], values[1] / values[3], values[2] / values[3]);
-  }
-  for (uint64_t f = 0; f < static_cast<uint64_t>(counts[1]); ++f) {
-    const int32_t corner_count = in.integer(in_face(f));
-    if (corner_count < 3)
-      fail(file_, "face has " + std::to_string(corner_count) + " corners; at least 3 are needed" + in_face(f));
-    if (static_cast<uint64_t>(corner_count) > in.remaining_words())
-      fail(file_, "the binary OFF data ends early (the file is truncated)" + in_face(f));
-    corners_.clear();
-    for (int32_t k = 0; k < corner_count; ++k) {
-      const int32_t index = in.integer(in_face(f));
-      if (index < 0 || static_cast<uint64_t>(index) >= vertex_count)
-        fail(file_, "face refers to vertex " + std::to_string(index) + ", but the file has " +
-                        std::to_string(vertex_count) + " vertices" + in_face(f));
-      corners_.push_back(index);
-    }
-    const int32_t colours = in.integer(in_face(f));
-    if (colours < 0) fail(file_, "face has a negative colour count" + in_face(f));
-    in.skip(static_cast<uint64_t>(colours), in_face(f));
-    mesh_.add_face(corners_);
-  }
-  return std::move(mesh_);
-}
 
 }  // namespace
 

@@ -69,11 +69,9 @@ void AsciiPlyBody::begin(const PlyElement& element, uint64_t index) {
   tokens_ = TokenReader(line);
 }
 
-void AsciiPlyBody::end() {
-  if (!tokens_.rest().empty())
-    fail_here("more values on the line than the header declares for a " + element_->name + " (the header does "
-              "not match the data)" + element_label(*element_, index_));
-}
+// Values after those the header declares are ignored, as line-based readers ignore them
+// (VCG's writers leave some after faces' texture coordinates).
+void AsciiPlyBody::end() {}
 
 double AsciiPlyBody::real(PlyType type, const PlyProperty& property) {
   if (is_integer(type)) return static_cast<double>(integer(type, property));
@@ -103,14 +101,6 @@ void AsciiPlyBody::skip(PlyType, uint64_t count, const PlyProperty& property) {
     if (!parse_real(text, value))
       fail_here("value " + quote_token(text) + " of '" + property.name + "' is not a number" +
                 element_label(*element_, index_));
-  }
-}
-
-void AsciiPlyBody::check_nothing_follows() {
-  std::string_view line;
-  while (next_line(line)) {
-    if (!trim_blanks(line).empty())
-      fail_here("the data goes on after the elements the header declares (the header does not match the data)");
   }
 }
 

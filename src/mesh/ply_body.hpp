@@ -3,9 +3,10 @@
 // ways they are stored (text; binary in either byte order) behind one interface, so that the
 // element walk in ply_reader.cpp is written once. Internal to src/mesh.
 //
-// Both read strictly: a binary body that ends early, a text value that is not a number of
-// its type, a text line with too few or too many values is an InputError naming the file,
-// the line (text), the element and the property.
+// Both read strictly what the header declares: a binary body that ends early, a text value
+// that is not a number of its type, a text line with too few values is an InputError naming
+// the file, the line (text), the element and the property. What follows the declared values
+// (on a text line, or after the last element) is not read.
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -48,7 +49,6 @@ class BinaryPlyBody {
     offset_ += static_cast<size_t>(count) * size_of(type);
   }
 
-  size_t offset() const { return offset_; }
   size_t remaining() const { return bytes_.size() - offset_; }
   int line() const { return 0; }
 
@@ -99,7 +99,7 @@ class BinaryPlyBody {
 // ---- Text -----------------------------------------------------------------------------
 
 // One element instance per line, values separated by blanks. Blank lines carry no values
-// and are skipped.
+// and are skipped; values after the declared ones are ignored.
 class AsciiPlyBody {
  public:
   static constexpr bool kBinary = false;
@@ -116,8 +116,6 @@ class AsciiPlyBody {
 
   size_t remaining() const { return bytes_.size() - offset_; }
   int line() const { return line_number_; }
-  // Fails if a line with values follows the last element.
-  void check_nothing_follows();
 
  private:
   bool next_line(std::string_view& line);

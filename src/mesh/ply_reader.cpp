@@ -12,7 +12,9 @@
 //
 // One pass over the body, streaming: each value is read once, in file order, and indices are
 // checked against the vertex count the header declares as they are read, so an error names
-// the line (text) and the element even when faces come before the vertices.
+// the line (text) and the element even when faces come before the vertices. Whatever follows
+// the declared data (values at the end of a text line, bytes or lines after the last element)
+// is ignored, as line-based readers ignore it: writers leave such things behind.
 #include <algorithm>
 #include <cmath>
 
@@ -235,22 +237,12 @@ void read_elements(Body& body, const std::vector<ElementPlan>& plans, PolygonMes
   for (const ElementPlan& plan : plans) walk.read(plan);
 }
 
-// Bytes after the last element: whitespace or zero padding is harmless; anything else means
-// the header does not describe the data.
-void check_binary_tail(std::string_view tail, const std::string& file) {
-  for (char c : tail) {
-    if (c != '\0' && c != '\n' && c != '\r' && c != ' ' && c != '\t')
-      fail(file, std::to_string(tail.size()) + " bytes follow the data the header declares (the header does not "
-                 "match the data)");
-  }
-}
-
 }  // namespace
 
 PolygonMesh read_ply(std::string_view bytes, const std::string& file) {
   PlyHeader header = parse_ply_header(bytes, file);
   const PlyElement* vertex = header.find("vertex");
-  if (!vertex) fail(file, "the PLY header declares no 'vertex' element");
+  if (!vertex) fail(file, "the PLY header declares no 'vertex' element, so there is nothing to render");
   Planner planner(file);
   std::vector<ElementPlan> plans;
   for (const PlyElement& element : header.elements) plans.push_back(planner.plan(element));
@@ -260,15 +252,12 @@ PolygonMesh read_ply(std::string_view bytes, const std::string& file) {
   if (header.encoding == PlyEncoding::Ascii) {
     AsciiPlyBody body(bytes, header.body_offset, header.body_line, file);
     read_elements(body, plans, mesh, vertex->count, file);
-    body.check_nothing_follows();
   } else if (header.encoding == PlyEncoding::BinaryLittleEndian) {
     BinaryPlyBody<false> body(bytes, header.body_offset, file);
     read_elements(body, plans, mesh, vertex->count, file);
-    check_binary_tail(bytes.substr(body.offset()), file);
   } else {
     BinaryPlyBody<true> body(bytes, header.body_offset, file);
     read_elements(body, plans, mesh, vertex->count, file);
-    check_binary_tail(bytes.substr(body.offset()), file);
   }
   return mesh;
 }

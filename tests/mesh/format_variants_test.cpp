@@ -55,10 +55,17 @@ TEST(FormatVariants, PlyRefusals) {
               load_mesh_from_memory("ply\nelement vertex 0\nproperty float x\nend_header\n", "f.ply");
             }),
             "f.ply:4: the PLY header has no format line ('format ascii 1.0' or binary)");
-  EXPECT_EQ(input_error_of([&] {
-              load_mesh_from_memory(start + "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "g.ply");
-            }),
-            "g.ply:11: the data goes on after the elements the header declares (the header does not match the data)");
+}
+
+TEST(FormatVariants, PlyDataBeyondWhatTheHeaderDeclaresIsIgnored) {
+  // Values after the declared ones on a line, lines after the last element (VCG writes both).
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 7 7\n1 0 0\n0 1 0\n3 0 1 2 9 9\n"
+      "0 0 1\n";
+  const LoadedMesh mesh = load_mesh_from_memory(ply, "extra.ply");
+  EXPECT_EQ(mesh.soup.vertices.size(), 3u);
+  EXPECT_EQ(mesh.soup.size(), 1u);
 }
 
 TEST(FormatVariants, PlyBlankLinesInTheDataCarryNoValues) {

@@ -63,6 +63,7 @@ const Expected kReadable[] = {
     {"off_polygon_12.off", 10, 0, 0},
     {"off_points.off", 0, 0, 4},
     {"off_binary.off", 12, 0, 0},
+    {"off_binary_little_endian.off", 12, 0, 0},
 };
 
 class CorpusCounts : public ::testing::TestWithParam<Expected> {};
@@ -92,8 +93,7 @@ struct Refused {
 
 const Refused kRefused[] = {
     {"broken_ply_header_mismatch.ply",
-     ":10: more values on the line than the header declares for a vertex (the header does not match the data) "
-     "(vertex 0)"},
+     ":13: too few values on the line: 'nx' is missing (the header does not match the data) (vertex 0)"},
     {"broken_ply_truncated.ply",
      ": the file ends in the middle of the data: the header declares 6 face elements (the file is truncated) "
      "(face 5)"},

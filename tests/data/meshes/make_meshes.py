@@ -128,9 +128,9 @@ def ply_files():
     write("ply_faces_and_edges.ply", header + "".join("%g %g %g\n" % v for v in CUBE_V) + "4 0 3 2 1\n" +
           "".join("%d %d\n" % (k, k + 4) for k in range(4)))
 
-    # Broken: the header declares 3 properties per vertex, the data has 4 (vertex 0, line 10).
-    header = ply_header("ascii", [("vertex", 3, XYZ), ("face", 1, FACE)])
-    write("broken_ply_header_mismatch.ply", header + "0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n")
+    # Broken: the header declares normals the data does not have (vertex 0, line 13).
+    header = ply_header("ascii", [("vertex", 3, XYZ + ["float nx", "float ny", "float nz"]), ("face", 1, FACE)])
+    write("broken_ply_header_mismatch.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
     # Broken: binary, cut in the middle of the faces.
     header = ply_header("binary_little_endian", [("vertex", 8, XYZ), ("face", 6, FACE)])
     data = b"".join(struct.pack("<3f", *v) for v in CUBE_V) + b"".join(struct.pack("<B4i", 4, *q) for q in CUBE_Q)
@@ -226,6 +226,10 @@ def off_files():
     write("off_polygon_12.off", "OFF\n12 1 0\n" + ring + "12 " + " ".join(map(str, range(12))) + "\n")
     # No faces: 4 points.
     write("off_points.off", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+    # Binary OFF as pmp-library writes it: little-endian, no colour counts. The cube.
+    data = b"OFF BINARY\n" + struct.pack("<3i", 8, 6, 0) + b"".join(struct.pack("<3f", *v) for v in CUBE_V)
+    data += b"".join(struct.pack("<5i", 4, *q) for q in CUBE_Q)
+    write("off_binary_little_endian.off", data)
     # Binary OFF: big-endian counts, vertices, faces with a colour count (the second with 4 colours).
     data = b"OFF BINARY\n" + struct.pack(">3i", 8, 6, 12) + b"".join(struct.pack(">3f", *v) for v in CUBE_V)
     for k, q in enumerate(CUBE_Q):
