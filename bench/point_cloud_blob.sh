@@ -16,14 +16,14 @@ if [ ! -f "$out/cloud.pov" ]; then
   python3 bench/point_cloud_blob.py "$models/dragon_vrip.ply.gz" 999999 "$radius" "$threshold" "$out"
 fi
 threads=$(nproc)
-convray_time=$( { /usr/bin/time -f "%e %M" build/convray quick "$out/cloud.ply" --radius "$radius" \
+/usr/bin/time -f "%e %M" -o "$out/convray.time" build/convray quick "$out/cloud.ply" --radius "$radius" \
   --threshold "$threshold" --size 800x600 --camera -300,200,-600 --look-at 0,0,0 --angle 42 \
-  --light -300,500,-500 --stats -o "$out/convray.png" > "$out/convray.log"; } 2>&1 | tail -n 1)
-povray_time=$( { /usr/bin/time -f "%e %M" povray "+I$out/cloud.pov" "+O$out/povray.png" +FN +W800 +H600 -A \
-  "+WT$threads" -D -P > "$out/povray.log" 2>&1; } 2>&1 | tail -n 1)
+  --light -300,500,-500 --stats -o "$out/convray.png" > "$out/convray.log"
+/usr/bin/time -f "%e %M" -o "$out/povray.time" povray "+I$out/cloud.pov" "+O$out/povray.png" +FN +W800 \
+  +H600 -A "+WT$threads" -D -P > "$out/povray.log" 2>&1
 grep -E "^quick|^time" "$out/convray.log"
-read -r cs cm <<< "$convray_time"
-read -r ps pm <<< "$povray_time"
+read -r cs cm < "$out/convray.time"
+read -r ps pm < "$out/povray.time"
 echo "convray: $cs s, $((cm / 1024)) MiB peak"
 echo "POV-Ray: $ps s, $((pm / 1024)) MiB peak ($(grep -E 'Parse Time' "$out/povray.log" | sed 's/.*(\(.*\))/parse \1/'))"
 python3 -c "print('convray / POV-Ray: %.2f' % ($cs / $ps))"
