@@ -120,7 +120,7 @@ class ObjReader {
 
   void read_face(TokenReader& tokens) {
     size_t f = mesh_.face_count();
-    read_corners(tokens, "face", in_face(f), true);
+    read_corners(tokens, "face", f, true);
     if (corners_.size() < 3)
       fail_here("face has " + std::to_string(corners_.size()) + " corners; at least 3 are needed" + in_face(f));
     mesh_.add_face(corners_);
@@ -129,7 +129,7 @@ class ObjReader {
 
   void read_line(TokenReader& tokens) {
     size_t l = mesh_.lines.size();
-    read_corners(tokens, "line", in_line(l), false);
+    read_corners(tokens, "line", l, false);
     if (corners_.size() < 2)
       fail_here("line has " + std::to_string(corners_.size()) + " corner" + (corners_.size() == 1 ? "" : "s") +
                 "; at least 2 are needed" + in_line(l));
@@ -141,31 +141,31 @@ class ObjReader {
     std::string_view token;
     size_t before = mesh_.points.size();
     while (next_value(tokens, token)) {
-      mesh_.points.push_back(read_index(token, token, "point", ""));
+      mesh_.points.push_back(read_index(token, token, "point", kNoElement));
       point_lines_.push_back(line_);
     }
     if (mesh_.points.size() == before) fail_here("'p' names no vertex");
   }
 
-  // `kind` is "face" or "line", `where` the element, e.g. " (face 3)".
-  void read_corners(TokenReader& tokens, const char* kind, const std::string& where, bool normals) {
+  // `kind` is "face" or "line", `element` its number.
+  void read_corners(TokenReader& tokens, const char* kind, size_t element, bool normals) {
     corners_.clear();
     std::string_view token;
     while (next_value(tokens, token)) {
       size_t slash = token.find('/');
-      corners_.push_back(read_index(token.substr(0, slash), token, kind, where));
-      if (slash != std::string_view::npos) check_attributes(token, token.substr(slash + 1), where, normals);
+      corners_.push_back(read_index(token.substr(0, slash), token, kind, element));
+      if (slash != std::string_view::npos) check_attributes(token, token.substr(slash + 1), kind, element, normals);
     }
   }
 
   // Returns the 0-based vertex index; positive ones are checked against the final vertex
   // count at the end, since they may point forward.
   // `text` is the index part of `token`.
-  int64_t read_index(std::string_view text, std::string_view token, const char* kind, const std::string& where) {
+  int64_t read_index(std::string_view text, std::string_view token, const char* kind, size_t element) {
     int64_t index = 0;
     if (!parse_integer(text, index) || index == 0 || index < -kMaxObjIndex || index > kMaxObjIndex)
       fail_here(std::string(kind) + (kind == std::string_view("point") ? " index " : " corner ") + quote_token(token) +
-                " does not start with a vertex index (a non-zero integer; OBJ counts from 1)" + where);
+                " does not start with a vertex index (a non-zero integer; OBJ counts from 1)" + where(kind, element));
     if (index > 0) {
       max_index_ = std::max(max_index_, index - 1);
       return index - 1;
@@ -173,13 +173,13 @@ class ObjReader {
     int64_t resolved = static_cast<int64_t>(mesh_.vertices.size()) + index;
     if (resolved < 0)
       fail_here(std::string(kind) + " refers to vertex " + std::to_string(index) + ", but only " + std::to_string(mesh_.vertices.size()) +
-                " vertices precede it" + where);
+                " vertices precede it" + where(kind, element));
     return resolved;
   }
 
   // The texture and normal indices are not used, but must be well formed: empty or a
   // non-zero integer, at most two slashes (one for polylines, which have no normals).
-  void check_attributes(std::string_view token, std::string_view rest, const std::string& where, bool normals) {
+  void check_attributes(std::string_view token, std::string_view rest, const char* kind, size_t element, bool normals) {
     size_t slash = rest.find('/');
     std::string_view texture = rest.substr(0, slash);
     std::string_view normal = slash == std::string_view::npos ? std::string_view() : rest.substr(slash + 1);
@@ -187,7 +187,13 @@ class ObjReader {
               (normals || normal.empty());
     if (!ok)
       fail_here(std::string(normals ? "face" : "line") + " corner " + quote_token(token) + " is not of the form " +
-                (normals ? "v, v/vt, v//vn or v/vt/vn" : "v or v/vt") + where);
+                (normals ? "v, v/vt, v//vn or v/vt/vn" : "v or v/vt") + where(kind, element));
+  }
+
+  // " (face 3)", " (line 0)"; nothing for points, which are not counted.
+  static constexpr size_t kNoElement = SIZE_MAX;
+  static std::string where(const char* kind, size_t element) {
+    return element == kNoElement ? "" : " (" + std::string(kind) + " " + std::to_string(element) + ")";
   }
 
   static bool is_attribute(std::string_view part) {

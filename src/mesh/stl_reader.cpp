@@ -4,7 +4,9 @@
 // NAME`, facets (`facet normal n n n`, `outer loop`, three `vertex x y z`, `endloop`,
 // `endfacet`), `endsolid`; any number of solids, empty ones included, one after the other.
 // A text file that starts with "solid" but whose size fits its count is binary: binary headers
-// often start with "solid" too.
+// often start with "solid" too. A binary file longer than its count says is read, the bytes
+// after its triangles ignored; a text file may end without its last `endsolid` (OpenMesh
+// writes such files), but not in the middle of a facet.
 //
 // Every corner is its own vertex (STL shares none); the normals are not read: the
 // triangles' winding says which side is out.
@@ -137,9 +139,11 @@ class AsciiStlReader {
     }
   }
 
-  // One facet; false at `endsolid`.
+  // One facet; false at `endsolid`, or at the end of the file between facets (OpenMesh's
+  // writer, among others, leaves the last `endsolid` out).
   bool read_facet_or_end() {
-    std::string_view token = next_or_truncated();
+    std::string_view token;
+    if (!tokens_.next(token)) return false;
     if (token.substr(0, 8) == "endsolid") {
       if (token != "endsolid") fail_here("expected 'endsolid' but found " + quote_token(token));
       tokens_.rest_of_line();  // the solid's name again, ignored
@@ -207,6 +211,7 @@ PolygonMesh read_stl(std::string_view bytes, const std::string& file) {
     count = binary_triangle_count(bytes);
     if (kBinaryHeaderSize + kBinaryTriangleSize * count == size) return read_binary(bytes, count);
   }
+  const uint64_t expected = kBinaryHeaderSize + kBinaryTriangleSize * uint64_t{count};
   size_t start = skip_white(bytes, 0);
   if (bytes.substr(start, 5) == "solid" && bytes.find('\0') == std::string_view::npos) {
     size_t at = find_binary_byte(bytes);
@@ -216,7 +221,8 @@ PolygonMesh read_stl(std::string_view bytes, const std::string& file) {
   if (size < kBinaryHeaderSize)
     fail(file, "not an STL file: too short for a binary STL (" + std::to_string(size) +
                    " bytes, the header alone is 84) and not ASCII STL (it does not start with 'solid')");
-  uint64_t expected = kBinaryHeaderSize + kBinaryTriangleSize * uint64_t{count};
+  // Bytes after the triangles the count declares are ignored, as after PLY's declared data.
+  if (size > expected) return read_binary(bytes, count);
   fail(file, "binary STL of the wrong size: the header declares " + std::to_string(count) +
                  " triangles, which take 84 + 50 x " + std::to_string(count) + " = " +
                  std::to_string(expected) + " bytes, but the file has " + std::to_string(size) + " bytes" +

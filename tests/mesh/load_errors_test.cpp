@@ -139,6 +139,14 @@ TEST(LoadErrors, AsciiPlyLineWithTooFewValues) {
             "(face 1)");
 }
 
+TEST(LoadErrors, BinaryStlLongerThanItsCountIsRead) {
+  // PyMesh's empty.stl: a count of 0 and one byte more than the 84 of the header.
+  EXPECT_EQ(error_loading(std::string(80, ' ') + std::string(4, '\0') + "\n", "empty.stl"),
+            "empty.stl: the file has no vertices, so there is nothing to render");
+  std::string bytes = written(two_triangles(), "long.stl", MeshEncoding::Binary);
+  EXPECT_EQ(load_mesh_from_memory(bytes + "trailing", "long.stl").soup.size(), 2u);
+}
+
 TEST(LoadErrors, TruncatedBinaryStl) {
   std::string bytes = written(two_triangles(), "cut.stl", MeshEncoding::Binary);
   EXPECT_EQ(error_loading(bytes.substr(0, bytes.size() - 20), "cut.stl"),
@@ -148,8 +156,10 @@ TEST(LoadErrors, TruncatedBinaryStl) {
 
 TEST(LoadErrors, TruncatedAsciiStl) {
   std::string bytes = written(two_triangles(), "cut.stl", MeshEncoding::Ascii);
-  EXPECT_EQ(error_loading(bytes.substr(0, bytes.find("endsolid")), "cut.stl"),
-            "cut.stl: ASCII STL: the file ends before 'endsolid' (the file is truncated) (face 2)");
+  // Between facets the end of the file ends the solid (OpenMesh leaves `endsolid` out).
+  EXPECT_EQ(load_mesh_from_memory(bytes.substr(0, bytes.find("endsolid")), "cut.stl").soup.size(), 2u);
+  EXPECT_EQ(error_loading(bytes.substr(0, bytes.rfind("endloop")), "cut.stl"),
+            "cut.stl: ASCII STL: the file ends before 'endsolid' (the file is truncated) (face 1)");
   size_t last_vertex = bytes.rfind("vertex");  // on line 13, in face 1
   EXPECT_EQ(error_loading(bytes.substr(0, last_vertex + 9), "cut.stl"),
             "cut.stl:13: ASCII STL: expected three numbers on the line (face 1)");
