@@ -1,5 +1,6 @@
 #include "mesh/ply_body.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "mesh/load_error.hpp"
@@ -84,11 +85,22 @@ double AsciiPlyBody::real(PlyType type, const PlyProperty& property) {
   return type == PlyType::Float32 ? static_cast<double>(static_cast<float>(value)) : value;
 }
 
+// A whole number written as a real ("3.0", "1e2") is that integer: some writers print every
+// value with a decimal point.
+static bool parse_whole_number(std::string_view text, int64_t& value) {
+  if (parse_integer(text, value)) return true;
+  double real = 0.0;
+  if (!parse_real(text, real) || !(std::abs(real) <= 9.0e15) || real != std::floor(real)) return false;
+  value = static_cast<int64_t>(real);
+  return true;
+}
+
 int64_t AsciiPlyBody::integer(PlyType type, const PlyProperty& property) {
   std::string_view text = token(property);
   int64_t value = 0;
-  if (!parse_integer(text, value) || value < lowest(type) || value > highest(type))
-    fail_here("value " + quote_token(text) + " of '" + property.name + "' is not a " + name_of(type) +
+  if (!parse_whole_number(text, value) || value < lowest(type) || value > highest(type))
+    fail_here("value " + quote_token(text) + " of '" + property.name + "' is not " +
+              (name_of(type)[0] == 'i' ? "an " : "a ") + name_of(type) +
               element_label(*element_, index_));
   return value;
 }

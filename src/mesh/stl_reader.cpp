@@ -11,6 +11,7 @@
 // Every corner is its own vertex (STL shares none); the normals are not read: the
 // triangles' winding says which side is out.
 #include <array>
+#include <cctype>
 #include <cstring>
 
 #include "mesh/load_error.hpp"
@@ -102,11 +103,22 @@ class Tokens {
   int line_ = 1;
 };
 
+// Keywords in any case: some CAD exporters write SOLID, FACET NORMAL, ...
+bool is(std::string_view token, std::string_view keyword) {
+  if (token.size() != keyword.size()) return false;
+  for (size_t i = 0; i < token.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(token[i])) != keyword[i]) return false;
+  }
+  return true;
+}
+
+bool starts_with_endsolid(std::string_view token) { return is(token.substr(0, 8), "endsolid"); }
+
 bool is_keyword(std::string_view token) {
   for (std::string_view keyword : {"facet", "normal", "outer", "loop", "vertex", "endloop", "endfacet", "solid"}) {
-    if (token == keyword) return true;
+    if (is(token, keyword)) return true;
   }
-  return token.substr(0, 8) == "endsolid";
+  return starts_with_endsolid(token);
 }
 
 class AsciiStlReader {
@@ -119,7 +131,7 @@ class AsciiStlReader {
   PolygonMesh read() {
     std::string_view token;
     while (tokens_.next(token)) {
-      if (token != "solid") fail_here("expected 'solid' but found " + quote_token(token));
+      if (!is(token, "solid")) fail_here("expected 'solid' but found " + quote_token(token));
       read_solid_name();
       while (read_facet_or_end()) ++facets_;
     }
@@ -144,12 +156,12 @@ class AsciiStlReader {
   bool read_facet_or_end() {
     std::string_view token;
     if (!tokens_.next(token)) return false;
-    if (token.substr(0, 8) == "endsolid") {
-      if (token != "endsolid") fail_here("expected 'endsolid' but found " + quote_token(token));
+    if (starts_with_endsolid(token)) {
+      if (!is(token, "endsolid")) fail_here("expected 'endsolid' but found " + quote_token(token));
       tokens_.rest_of_line();  // the solid's name again, ignored
       return false;
     }
-    if (token != "facet") fail_here("expected 'facet' or 'endsolid' but found " + quote_token(token) + in_face(facets_));
+    if (!is(token, "facet")) fail_here("expected 'facet' or 'endsolid' but found " + quote_token(token) + in_face(facets_));
     expect_on_line("normal");
     read_numbers();
     expect("outer");
@@ -168,13 +180,13 @@ class AsciiStlReader {
 
   void expect(std::string_view keyword) {
     std::string_view token = next_or_truncated();
-    if (token != keyword)
+    if (!is(token, keyword))
       fail_here("expected '" + std::string(keyword) + "' but found " + quote_token(token) + in_face(facets_));
   }
 
   void expect_on_line(std::string_view keyword) {
     std::string_view token;
-    if (!tokens_.next_on_line(token) || token != keyword)
+    if (!tokens_.next_on_line(token) || !is(token, keyword))
       fail_here("expected '" + std::string(keyword) + "' on the same line" + in_face(facets_));
   }
 
@@ -213,7 +225,7 @@ PolygonMesh read_stl(std::string_view bytes, const std::string& file) {
   }
   const uint64_t expected = kBinaryHeaderSize + kBinaryTriangleSize * uint64_t{count};
   size_t start = skip_white(bytes, 0);
-  if (bytes.substr(start, 5) == "solid" && bytes.find('\0') == std::string_view::npos) {
+  if (is(bytes.substr(start, 5), "solid") && bytes.find('\0') == std::string_view::npos) {
     size_t at = find_binary_byte(bytes);
     if (at != std::string_view::npos) fail(file, "the ASCII STL contains a control byte at offset " + std::to_string(at));
     return AsciiStlReader(bytes.substr(start), file).read();

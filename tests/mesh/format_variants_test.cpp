@@ -92,5 +92,26 @@ TEST(FormatVariants, UppercaseGzipExtension) {
             "OFF, gzip-compressed");
 }
 
+TEST(FormatVariants, StlKeywordsInCapitals) {
+  // Some CAD exporters write the ASCII keywords in capitals.
+  EXPECT_EQ(triangles_in("SOLID part\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"
+                         "ENDLOOP\nENDFACET\nENDSOLID part\n", "caps.stl"),
+            1u);
+}
+
+TEST(FormatVariants, PlyIntegersWrittenAsReals) {
+  // "3.0 0.0 1.0 2.0": whole numbers with a decimal point are the integers they name.
+  EXPECT_EQ(triangles_in("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                         "0 0 0\n1 0 0\n0 1 0\n3.0 0.0 1.0 2e0\n", "reals.ply"),
+            1u);
+  EXPECT_EQ(testing::input_error_of([] {
+              load_mesh_from_memory("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                    "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", "half.ply");
+            }),
+            "half.ply:13: value '1.5' of 'vertex_indices' is not an int (face 0)");
+}
+
 }  // namespace
 }  // namespace convray::mesh
