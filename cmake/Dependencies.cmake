@@ -1,7 +1,5 @@
 # Every dependency is a Debian bookworm package; scripts/setup.sh installs the missing ones.
 find_package(glm CONFIG REQUIRED)
-find_package(tinyobjloader CONFIG REQUIRED)
-find_package(assimp CONFIG REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(TBB CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)

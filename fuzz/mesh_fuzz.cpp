@@ -17,7 +17,7 @@
 #include <string_view>
 
 #include "mesh/load.hpp"
-#include "mesh/stats.hpp"
+#include "mesh/skeleton_stats.hpp"
 #include "util/error.hpp"
 
 namespace {
@@ -46,6 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     convray::mesh::LoadedMesh mesh = convray::mesh::load_mesh_from_memory(bytes, name);
     convray::mesh::compute_stats(mesh.soup);  // whatever loads must be safe to analyse
+    convray::mesh::compute_skeleton_stats(mesh);  // bounds, segment lengths, point spacing
   } catch (const convray::InputError&) {
     // The expected outcome for almost every input.
   }

@@ -30,9 +30,14 @@ for format in "${formats[@]}"; do targets+=("mesh_fuzz_$format"); done
 cmake --build "$build" -j "$jobs" --target "${targets[@]}" >"$out/logs/build.log" 2>&1 ||
   { tail -50 "$out/logs/build.log"; exit 2; }
 
-# Seed corpus: fresh every time, merged into the corpus the runs keep.
+# Seed corpus: fresh every time, merged into the corpus the runs keep: our writers' files, and
+# the variants of tests/data/meshes/ (one small file per way users' files are written).
 rm -rf "$out/seeds"
 "$build/fuzz/mesh_fuzz_seeds" "$out/seeds"
+for format in obj ply stl off; do
+  mkdir -p "$out/seeds/$format"
+  cp "$root"/tests/data/meshes/*."$format" "$out/seeds/$format"/ 2>/dev/null || true
+done
 
 # The largest seed is a few KiB; room for growth, small enough to stay fast.
 max_len_of() {

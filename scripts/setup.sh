@@ -14,7 +14,7 @@ esac
 # Debian bookworm packages (DESIGN.md section 3). Only the missing ones are installed.
 packages=(
   build-essential cmake git pkg-config
-  libglm-dev libtinyobjloader-dev libassimp-dev zlib1g-dev
+  libglm-dev zlib1g-dev
   libembree-dev libtbb-dev libcli11-dev tao-pegtl-dev
   libopenimageio-dev openimageio-tools
   libgtest-dev libbenchmark-dev

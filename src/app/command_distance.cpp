@@ -31,6 +31,8 @@ int run_distance(const DistanceOptions& options, std::ostream& out, std::ostream
   try {
     const mesh::LoadedMesh a = mesh::load_mesh(options.a_path);
     const mesh::LoadedMesh b = mesh::load_mesh(options.b_path);
+    mesh::require_triangles(a, options.a_path, "distance");
+    mesh::require_triangles(b, options.b_path, "distance");
     const mesh::HausdorffDistance distance =
         mesh::hausdorff_distance(a.soup, b.soup, {.samples = options.samples});
     // Fractions of one length shared by every line, so they compare across lines.

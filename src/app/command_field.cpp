@@ -17,6 +17,7 @@
 #include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_field.hpp"
+#include "implicit/mesh_skeleton.hpp"
 #include "mesh/load.hpp"
 #include "sdl/parser.hpp"
 #include "util/error.hpp"
@@ -142,14 +143,26 @@ int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, 
   return answer(implicit::ConvolutionSurface(record));
 }
 
+// A file's field: its triangles through MeshField (grid and SIMD batches); a file with
+// segments or points through the convolution surface of its whole skeleton.
+int run_mesh_field(const FieldOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
+  const mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
+  if (loaded.segments.empty() && loaded.points.empty()) {
+    const implicit::MeshField field(soup_triangles(loaded.soup), o.radius, o.strength);
+    return answer_points([&](const Vec3& p) { return field.field(p); }, in, out, err);
+  }
+  implicit::ConvolutionObject object;
+  implicit::add_skeleton(implicit::skeleton_of(loaded), {o.strength, o.radius}, object);
+  const implicit::ConvolutionSurface surface(object);  // its threshold (1) is not used here
+  return answer_points([&](const Vec3& p) { return surface.field(p); }, in, out, err);
+}
+
 }  // namespace
 
 int run_field(const FieldOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
   try {
     if (!options.scene_path.empty()) return run_scene_field(options, in, out, err);
-    const mesh::LoadedMesh loaded = mesh::load_mesh(options.mesh_path);
-    const implicit::MeshField field(soup_triangles(loaded.soup), options.radius, options.strength);
-    return answer_points([&](const Vec3& p) { return field.field(p); }, in, out, err);
+    return run_mesh_field(options, in, out, err);
   } catch (const InputError& e) {
     err << e.what() << "\n";
     return 2;

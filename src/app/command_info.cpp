@@ -6,7 +6,7 @@
 #include "app/short_number.hpp"
 #include "mesh/load.hpp"
 #include "mesh/self_intersections.hpp"
-#include "mesh/stats.hpp"
+#include "mesh/skeleton_stats.hpp"
 #include "util/error.hpp"
 
 namespace convray::app {
@@ -33,30 +33,63 @@ void print_topology(const mesh::MeshStats& stats, std::ostream& out) {
       << " (V - E + F; 2 per closed sphere-like component, 2 less per handle)\n";
 }
 
-// The advice of mesh::advised_radius, with its two ingredients.
-void print_radius_advice(const mesh::MeshStats& stats, std::ostream& out) {
-  Vec3 size = stats.bounds.extent();
-  double largest = std::max({size.x, size.y, size.z});
-  double start = mesh::advised_radius(stats);
-  out << "radius advice: start with R = " << number(start)
-      << " (the smaller of the mean edge length, " << number(stats.mean_edge_length)
-      << ", and a tenth of the largest dimension, " << number(largest)
-      << "); larger radii blur the shape\n";
+void print_lines(const mesh::LoadReport& report, std::ostream& out) {
+  if (report.lines_read == 0) return;
+  out << "lines read: " << report.lines_read << " (polylines and edges; dropped zero-length segments: "
+      << report.dropped_zero_length << ")\n";
 }
 
-void print_report(const std::string& path, const mesh::LoadedMesh& mesh,
-                  const mesh::MeshStats& stats, std::ostream& out) {
+void print_points(const mesh::LoadReport& report, const mesh::SkeletonStats& skeleton, std::ostream& out) {
+  if (report.point_cloud) out << "point cloud: the file has no faces and no lines, so every vertex is a point\n";
+  if (skeleton.points < 2) return;
+  out << "mean point spacing: " << number(skeleton.mean_point_spacing)
+      << " (mean distance from each point to its nearest neighbour)\n";
+}
+
+// The advice of mesh::advise_radius, with its two ingredients.
+void print_radius_advice(const mesh::RadiusAdvice& advice, std::ostream& out) {
+  out << "radius advice: start with R = " << number(advice.radius);
+  switch (advice.basis) {
+    case mesh::RadiusBasis::edges:
+      out << " (the smaller of the mean edge length, " << number(advice.measure) << ", and a tenth of the largest "
+          << "dimension, " << number(advice.largest) << "); larger radii blur the shape\n";
+      return;
+    case mesh::RadiusBasis::segments:
+      out << " (the smaller of the mean segment length, " << number(advice.measure) << ", and a tenth of the "
+          << "largest dimension, " << number(advice.largest) << "); larger radii thicken the tubes\n";
+      return;
+    case mesh::RadiusBasis::points:
+      out << " (the smaller of twice the mean point spacing, " << number(advice.measure) << ", and a tenth of the "
+          << "largest dimension, " << number(advice.largest) << "), so that neighbouring points merge; smaller "
+          << "radii leave separate beads\n";
+      return;
+    case mesh::RadiusBasis::size:
+      out << " (a tenth of the largest dimension, " << number(advice.largest) << ", or 1 for a single point)\n";
+      return;
+  }
+}
+
+void print_report(const std::string& path, const mesh::LoadedMesh& mesh, const mesh::MeshStats& stats,
+                  std::ostream& out) {
+  const mesh::SkeletonStats skeleton = mesh::compute_skeleton_stats(mesh);
   out << "file: " << path << "\n"
       << "format: " << mesh.format << "\n"
       << "triangles: " << stats.triangles << "\n"
+      << "segments: " << skeleton.segments << "\n"
+      << "points: " << skeleton.points << "\n"
       << "vertices: " << stats.vertices << " (distinct positions)\n";
   print_faces(mesh.report, out);
-  out << "bounding box min: " << triple(stats.bounds.lo) << "\n"
-      << "bounding box max: " << triple(stats.bounds.hi) << "\n"
-      << "size: " << triple(stats.bounds.extent()) << "\n"
-      << "mean edge length: " << number(stats.mean_edge_length) << "\n";
-  print_topology(stats, out);
-  print_radius_advice(stats, out);
+  print_lines(mesh.report, out);
+  out << "bounding box min: " << triple(skeleton.bounds.lo) << "\n"
+      << "bounding box max: " << triple(skeleton.bounds.hi) << "\n"
+      << "size: " << triple(skeleton.bounds.extent()) << "\n";
+  if (stats.triangles > 0) {
+    out << "mean edge length: " << number(stats.mean_edge_length) << "\n";
+    print_topology(stats, out);
+  }
+  if (skeleton.segments > 0) out << "mean segment length: " << number(skeleton.mean_segment_length) << "\n";
+  print_points(mesh.report, skeleton, out);
+  print_radius_advice(mesh::advise_radius(stats, skeleton), out);
 }
 
 // Faces are numbered from 1 in file order among the triangles kept (polygons split into fans,

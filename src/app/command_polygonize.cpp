@@ -14,10 +14,11 @@
 #include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_field.hpp"
+#include "implicit/mesh_skeleton.hpp"
 #include "implicit/threshold.hpp"
 #include "mesh/format.hpp"
 #include "mesh/load.hpp"
-#include "mesh/stats.hpp"
+#include "mesh/skeleton_stats.hpp"
 #include "mesh/write.hpp"
 #include "polygonize/outer_shells.hpp"
 #include "polygonize/surface_error.hpp"
@@ -40,27 +41,48 @@ struct PreparedField {
   std::shared_ptr<const void> owner;  // keeps the evaluator the source's functions call alive
 };
 
-PreparedField prepare_mesh(const PolygonizeOptions& o) {
-  mesh::LoadedMesh loaded = mesh::load_mesh(o.input);
-  if (o.fit_box) mesh::fit_into_box(loaded.soup, *o.fit_box);
-  PreparedField prepared;
-  prepared.radius = o.radius ? *o.radius : mesh::advised_radius(mesh::compute_stats(loaded.soup));
-  try {
-    prepared.source.threshold =
-        implicit::resolve_threshold(o.strength, prepared.radius, o.offset, o.threshold);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(kCommandLine, e.what());
-  }
-  auto field = std::make_shared<implicit::MeshField>(soup_triangles(loaded.soup), prepared.radius,
-                                                     o.strength);
+// A file of triangles only: MeshField's SIMD fast path classifies the lattice and leads the
+// searches; the scalar closed form (its exact twin) places the vertices, so |F - T| <= 1e-6 T
+// holds on the exact field.
+void prepare_triangles(PreparedField& prepared, const mesh::LoadedMesh& loaded, double strength) {
+  auto field = std::make_shared<implicit::MeshField>(soup_triangles(loaded.soup), prepared.radius, strength);
   implicit::ConvolutionObject supports_only;
-  supports_only.meshes.push_back({field->triangles(), {o.strength, prepared.radius}});
+  supports_only.meshes.push_back({field->triangles(), {strength, prepared.radius}});
   prepared.source.supports = polygonize::support_boxes(supports_only);
-  // The SIMD fast path classifies the lattice and leads the searches; the scalar closed form
-  // (its exact twin) places the vertices, so |F - T| <= 1e-6 T holds on the exact field.
   prepared.source.field = [field](const Vec3& p) { return field->field_exact(p); };
   prepared.source.value = [field](const Vec3& p) { return field->value(p); };
   prepared.owner = field;
+}
+
+template <typename Surface>
+void place_field(PreparedField& prepared, std::shared_ptr<const Surface> surface,
+                 const std::vector<Box3>& supports, const scene::Transform& placed);
+
+PreparedField prepare_mesh(const PolygonizeOptions& o) {
+  mesh::LoadedMesh loaded = mesh::load_mesh(o.input);
+  if (o.fit_box) mesh::fit_into_box(loaded, *o.fit_box);
+  PreparedField prepared;
+  prepared.radius = o.radius ? *o.radius
+                             : mesh::advise_radius(mesh::compute_stats(loaded.soup),
+                                                   mesh::compute_skeleton_stats(loaded))
+                                   .radius;
+  implicit::MeshSkeleton skeleton = implicit::skeleton_of(loaded);
+  try {
+    prepared.source.threshold = implicit::resolve_threshold(o.strength, prepared.radius, o.offset,
+                                                            o.threshold, skeleton.offset_from());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(kCommandLine, e.what());
+  }
+  if (skeleton.segments.empty() && skeleton.points.empty()) {
+    prepare_triangles(prepared, loaded, o.strength);
+    return prepared;
+  }
+  // Segments and points: the exact field of the whole skeleton's convolution surface.
+  implicit::ConvolutionObject object;
+  object.threshold = prepared.source.threshold;
+  implicit::add_skeleton(std::move(skeleton), {o.strength, prepared.radius}, object);
+  place_field(prepared, std::make_shared<const implicit::ConvolutionSurface>(object),
+              polygonize::support_boxes(object), scene::Transform{});
   return prepared;
 }
 

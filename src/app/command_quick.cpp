@@ -9,11 +9,11 @@
 #include <stdexcept>
 
 #include "app/short_number.hpp"
-#include "app/soup_triangles.hpp"
 #include "implicit/convolution_surface.hpp"
+#include "implicit/mesh_skeleton.hpp"
 #include "implicit/threshold.hpp"
 #include "mesh/load.hpp"
-#include "mesh/stats.hpp"
+#include "mesh/skeleton_stats.hpp"
 #include "render/camera.hpp"
 #include "render/convolution_traceable.hpp"
 #include "render/image_file.hpp"
@@ -39,31 +39,50 @@ struct PhaseTimes {
   double load = 0, build = 0, render = 0, write = 0;
 };
 
-// T from --threshold or --offset (default R/2) for a mesh of strength 1; a bad offset is a
-// command-line error.
-double quick_threshold(const QuickOptions& o, double radius) {
+// T from --threshold or --offset (default R/2, from the skeleton's triangles, else its
+// segments, else its points) for a skeleton of strength 1; a bad offset is a command-line
+// error.
+double quick_threshold(const QuickOptions& o, double radius,
+                       implicit::OffsetFrom from = implicit::OffsetFrom::plane) {
   try {
-    return implicit::resolve_threshold(1.0, radius, o.offset, o.threshold);
+    return implicit::resolve_threshold(1.0, radius, o.offset, o.threshold, from);
   } catch (const std::invalid_argument& e) {
     throw InputError(kCommandLine, e.what());
   }
 }
 
 struct QuickObject {
-  implicit::ConvolutionObject object;  // one mesh, strength 1
+  implicit::ConvolutionObject object;  // one file's skeleton, strength 1
   double radius = 0.0;
+  size_t triangles = 0, segments = 0, points = 0;
 };
 
-// The mesh read, fitted into its box, and made a convolution object with its radius and
+// The file read, fitted into its box, and made a convolution object with its radius and
 // threshold resolved.
 QuickObject load_object(const QuickOptions& o) {
   mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
-  if (o.fit_box) mesh::fit_into_box(loaded.soup, *o.fit_box);
+  if (o.fit_box) mesh::fit_into_box(loaded, *o.fit_box);
   QuickObject model;
-  model.radius = o.radius ? *o.radius : mesh::advised_radius(mesh::compute_stats(loaded.soup));
-  model.object.threshold = quick_threshold(o, model.radius);
-  model.object.meshes.push_back({soup_triangles(loaded.soup), {1.0, model.radius}});
+  model.radius = o.radius ? *o.radius
+                          : mesh::advise_radius(mesh::compute_stats(loaded.soup),
+                                                mesh::compute_skeleton_stats(loaded))
+                                .radius;
+  implicit::MeshSkeleton skeleton = implicit::skeleton_of(loaded);
+  model.triangles = skeleton.triangles.size();
+  model.segments = skeleton.segments.size();
+  model.points = skeleton.points.size();
+  model.object.threshold = quick_threshold(o, model.radius, skeleton.offset_from());
+  implicit::add_skeleton(std::move(skeleton), {1.0, model.radius}, model.object);
   return model;
+}
+
+// "12 triangles", "0 triangles, 5000 points", "1 triangle, 1 point": what the skeleton is.
+std::string skeleton_summary(const QuickObject& model) {
+  auto count = [](size_t n, const std::string& what) { return std::to_string(n) + " " + what + (n == 1 ? "" : "s"); };
+  std::string summary = count(model.triangles, "triangle");
+  if (model.segments > 0) summary += ", " + count(model.segments, "segment");
+  if (model.points > 0) summary += ", " + count(model.points, "point");
+  return summary;
 }
 
 // The camera the options ask for; POV-Ray's own checks (distinct points, a view that is not
@@ -91,10 +110,11 @@ render::Lighting make_lighting(const QuickOptions& o, const render::Camera& came
 }
 
 void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surface,
-                 size_t triangles, const render::RenderStats& s, const PhaseTimes& t,
+                 const QuickObject& model, const render::RenderStats& s, const PhaseTimes& t,
                  std::ostream& out) {
   const implicit::TraceStats& trace = s.trace;
   const double per_query = trace.rays ? double(trace.primitives) / double(trace.rays) : 0.0;
+  const size_t primitives = model.triangles + model.segments + model.points;
   const size_t bytes = surface.memory_bytes();
   out << "image: " << o.width << "x" << o.height << " (" << uint64_t(o.width) * uint64_t(o.height)
       << " pixels)\n"
@@ -113,7 +133,8 @@ void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surf
       << "subdivisions: " << trace.subdivisions << "\n"
       << "fallbacks: " << trace.fallbacks << "\n"
       << "surface memory: " << number(double(bytes) / (1024.0 * 1024.0)) << " MiB ("
-      << number(triangles ? double(bytes) / double(triangles) : 0.0) << " bytes per triangle)\n"
+      << number(primitives ? double(bytes) / double(primitives) : 0.0) << " bytes per "
+      << (primitives == model.triangles ? "triangle" : "primitive") << ")\n"
       << "time load: " << number(t.load) << " s\n"
       << "time build: " << number(t.build) << " s\n"
       << "time render: " << number(t.render) << " s\n"
@@ -137,7 +158,6 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
   const implicit::ConvolutionSurface surface(model.object);
   times.build = seconds_since(start);
   const double radius = model.radius, threshold = model.object.threshold;
-  const size_t triangles = model.object.meshes.front().triangles.size();
 
   start = Clock::now();
   const Box3 bounds = surface.bounds();
@@ -158,11 +178,11 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
       o.output, {o.width, o.height, result.film.rgb(), render::PixelEncoding::linear});
   times.write = seconds_since(start);
 
-  out << "quick: " << o.mesh_path << " (" << triangles << " triangles, R = " << number(radius)
+  out << "quick: " << o.mesh_path << " (" << skeleton_summary(model) << ", R = " << number(radius)
       << ", T = " << number(threshold) << "): wrote " << o.output << " (" << o.width << "x"
       << o.height << ", " << number(times.load + times.build + times.render + times.write)
       << " s)\n";
-  if (o.stats) print_stats(o, surface, triangles, result.stats, times, out);
+  if (o.stats) print_stats(o, surface, model, result.stats, times, out);
 }
 
 }  // namespace

@@ -97,6 +97,7 @@ int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
       throw InputError({"command line"}, e.what());
     }
     const mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
+    mesh::require_triangles(loaded, o.mesh_path, "slice");
     const implicit::MeshField field(soup_triangles(loaded.soup), o.radius, o.strength);
     const PlaneFrame frame =
         frame_for(loaded.soup.bounds(), o.axis, o.at, 1.5 * o.radius, o.width, o.height);

@@ -118,7 +118,8 @@ struct QuickArguments {
 CLI::App* add_quick_command(CLI::App& app, QuickArguments& q) {
   CLI::App* quick = app.add_subcommand(
       "quick",
-      "Render a picture of a mesh's convolution surface: every triangle convolved with the "
+      "Render a picture of a mesh's convolution surface: every triangle (and every segment and "
+      "point of a file's polylines, edges or point cloud) convolved with the "
       "kernel (1 - r^2/R^2)^2, the surface F = T ray traced through a POV-Ray-style perspective "
       "camera, lit by one point light with hard shadows and Phong shading. Tiles run on all "
       "cores; a progress bar shows on a terminal. The image appears complete or not at all. "
@@ -129,10 +130,12 @@ CLI::App* add_quick_command(CLI::App& app, QuickArguments& q) {
       ->required();
   quick->add_option("--radius", q.options.radius,
                     "kernel radius R, model units (default: what 'convray info' advises: the "
-                    "smaller of the mean edge length and a tenth of the largest extent)")
+                    "smaller of the mean edge length (segment length; twice the point spacing) "
+                    "and a tenth of the largest extent)")
       ->check(kPositive);
   auto* offset = quick->add_option("--offset", q.options.offset,
-                                   "surface at distance D from flat parts of the mesh, model "
+                                   "surface at distance D from flat parts of the mesh (from "
+                                   "segments for a line set, points for a point cloud), model "
                                    "units, 0 <= D < R (default R/2)");
   offset->check(kFinite);
   quick->add_option("--threshold", q.options.threshold,
@@ -238,7 +241,8 @@ CLI::App* add_polygonize_command(CLI::App& app, convray::app::PolygonizeOptions&
   cmd->add_option("--fit-box", p.fit_box, "meshes: first scale the largest extent to SIZE, "
                   "centred at the origin (the paper's protocol: 400)")->check(kPositive);
   auto* offset = cmd->add_option("--offset", p.offset,
-                                 "meshes: surface at distance D from flat regions (default R/2)");
+                                 "meshes: surface at distance D from flat regions (from segments "
+                                 "for a line set, points for a point cloud; default R/2)");
   offset->check(kFinite);
   cmd->add_option("--threshold", p.threshold, "the raw threshold T (overrides --offset, or a "
                   "scene object's threshold)")->check(kFinite)->excludes(offset);
@@ -306,8 +310,9 @@ int main(int argc, char** argv) {
   std::string info_path;
   bool info_self_intersections = false;
   CLI::App* info = app.add_subcommand(
-      "info", "Report a mesh: triangles, vertices, dropped faces, bounds, edge statistics, "
-              "components; what to check before choosing a radius.");
+      "info", "Report a mesh: triangles, segments, points, vertices, dropped faces, bounds, "
+              "edge statistics, components, point spacing; what to check before choosing a "
+              "radius.");
   info->add_option("MESH", info_path, "mesh file: .obj .ply .stl .off, optionally .gz")
       ->required();
   info->add_flag("--self-intersections", info_self_intersections,
@@ -317,7 +322,7 @@ int main(int argc, char** argv) {
 
   convray::app::FieldOptions field_options;
   CLI::App* field = app.add_subcommand(
-      "field", "Evaluate the summed raw field of a mesh's triangles at points read from "
+      "field", "Evaluate the summed raw field of a mesh's triangles (segments, points) at points read from "
                "standard input ('x y z' per line); writes 'F dF/dx dF/dy dF/dz' per line, "
                "17 significant digits. Exit code 2 and 'stdin:LINE: ...' on a malformed line.");
   field->add_option("SCENE", field_options.scene_path,

@@ -19,8 +19,26 @@ inline double threshold_for_offset(double strength, double radius, double offset
   return strength * (kPi / 3.0) * k * k * k / (r2 * r2);
 }
 
-// The threshold a user asked for: T itself when given, else the one for `offset` (R/2 when
-// neither is given). Throws std::invalid_argument unless 0 <= offset < radius.
+// The threshold that puts the surface around a lone straight segment, far from its ends, at
+// distance `offset`: the infinite line's field s (16/15) (R^2 - d^2)^(5/2) / R^4 at d = offset
+// (the kernel integrated along the line). Needs 0 <= offset < radius.
+inline double threshold_for_line_offset(double strength, double radius, double offset) {
+  const double r2 = radius * radius;
+  const double a2 = r2 - offset * offset;
+  return strength * (16.0 / 15.0) * a2 * a2 * std::sqrt(a2) / (r2 * r2);
+}
+
+// The threshold that puts the surface around a lone point at distance `offset`: the kernel
+// itself, s (1 - d^2/R^2)^2 at d = offset. Needs 0 <= offset < radius.
+inline double threshold_for_point_offset(double strength, double radius, double offset) {
+  const double k = 1.0 - (offset * offset) / (radius * radius);
+  return strength * k * k;
+}
+
+// What an offset is measured from: the skeleton's most extended kind of primitive. A file
+// with triangles is a surface; segments without triangles are tubes; points alone are balls.
+enum class OffsetFrom { plane, line, point };
+
 // Throws std::invalid_argument unless double precision carries a kernel of this radius: the
 // closed forms divide by R^4, which must be a normal, finite number (about 1e-77 < R < 1e77).
 inline void check_radius_in_range(double radius) {
@@ -33,8 +51,12 @@ inline void check_radius_in_range(double radius) {
   throw std::invalid_argument(message.str());
 }
 
+// The threshold a user asked for: T itself when given, else the one for `offset` (R/2 when
+// neither is given) from a plane, a line or a point. Throws std::invalid_argument unless the
+// radius is in range and 0 <= offset < radius.
 inline double resolve_threshold(double strength, double radius, std::optional<double> offset,
-                                std::optional<double> threshold) {
+                                std::optional<double> threshold,
+                                OffsetFrom from = OffsetFrom::plane) {
   check_radius_in_range(radius);
   if (threshold) return *threshold;
   const double d = offset.value_or(0.5 * radius);
@@ -43,6 +65,11 @@ inline double resolve_threshold(double strength, double radius, std::optional<do
     message << "--offset must satisfy 0 <= offset < radius (offset " << d << ", radius " << radius
             << ")";
     throw std::invalid_argument(message.str());
+  }
+  switch (from) {
+    case OffsetFrom::line: return threshold_for_line_offset(strength, radius, d);
+    case OffsetFrom::point: return threshold_for_point_offset(strength, radius, d);
+    case OffsetFrom::plane: break;
   }
   return threshold_for_offset(strength, radius, d);
 }

@@ -1,12 +1,14 @@
 #pragma once
-// Reading polygon soups from OBJ, PLY (ascii, binary little and big endian), STL (ascii,
-// binary) and OFF files, each optionally gzip-compressed (`bunny.ply.gz`).
+// Reading skeletons from OBJ, PLY (ascii, binary little and big endian), STL (ascii, binary)
+// and OFF (text and binary) files, each optionally gzip-compressed (`bunny.ply.gz`). A file
+// gives triangles (its polygons, triangulated), segments (OBJ `l` polylines, PLY `edge`
+// elements) and points (OBJ `p`; or every vertex of a file with no faces and no lines, a
+// point cloud), all over one array of vertices. docs/mesh-input.md is the user's view.
 //
-// The libraries do the parsing (tinyobjloader for OBJ, assimp 5.2 for PLY/STL/OFF), but they
-// are lenient where we must not be: assimp reads past the end of a truncated binary PLY,
-// clamps out-of-range OFF indices, and both silently turn missing numbers into zeros. So every
-// file is first checked by our own scanner (src/mesh/*_check.cpp), and the result is checked
-// again (finite coordinates, indices in range) before anyone sees it.
+// The readers are our own (src/mesh/*_reader.cpp), written from the formats' specifications
+// and streaming: one pass over the bytes, nothing allocated that the bytes do not pay for.
+// Every file is read strictly, and the result is checked again (finite coordinates, indices
+// in range) before anyone sees it.
 //
 // Errors. Every problem with the input is a convray::InputError whose text reads
 //
@@ -14,45 +16,60 @@
 //
 //   FILE     the path (or, for load_mesh_from_memory, the name) exactly as given;
 //   LINE     for text formats, the 1-based line the problem is on, where there is one;
-//   ELEMENT  `vertex N` or `face N`: the element the problem is in, counted from 0 in the
-//            order the file lists them (as PLY and OFF number them; in OBJ too, although
-//            OBJ's own indices start at 1). An index a face refers to is quoted as the file
-//            writes it. Example:
-//                bunny.ply: face refers to vertex 90, but the file has 80 vertices (face 12)
-//   Problems the library itself reports are wrapped as `FILE: PLY reader: <its message>`.
+//   ELEMENT  `vertex N`, `face N`, `line N` (a polyline, or a PLY edge) or another PLY
+//            element: the element the problem is in, counted from 0 in the order the file
+//            lists them (as PLY and OFF number them; in OBJ too, although OBJ's own indices
+//            start at 1). An index a face refers to is quoted as the file writes it. Example:
+//                bunny.ply:15: face refers to vertex 90, but the file has 80 vertices (face 12)
 //
 // Faces. Polygons with more than three corners are triangulated (ear clipping in the
 // polygon's plane). Triangles whose three positions span no area (cross product exactly zero)
-// and triangles that name one vertex twice are dropped and counted, not errors. A file that
-// ends up with no triangle at all is an error.
+// and triangles that name one vertex twice are dropped and counted, not errors; so are
+// segments whose two ends coincide. A file that ends up with nothing to render (no triangle,
+// segment or point) is an error.
 //
-// Precision. OBJ coordinates are read exactly (correctly rounded doubles). assimp stores
-// positions as float32, so PLY, STL and OFF coordinates are rounded to float.
+// Precision. Coordinates keep the precision the file gives them: text is read exactly
+// (correctly rounded doubles), except PLY values declared `float`, which are rounded to
+// float32 as their binary form would be; binary float32 and float64 values are exact.
 //
 // Safety. No byte sequence makes these functions crash, hang or allocate without bound: gzip
 // output is capped (see kMaxInflatedBytes) and counts in headers are checked against the
 // bytes that are really there before anything is allocated. Fuzzed by fuzz/mesh_fuzz.cpp.
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "mesh/soup.hpp"
 
 namespace convray::mesh {
 
-// What reading did to the faces of the file.
+using Segment = std::array<uint32_t, 2>;  // two vertex indices
+
+// What reading did to the faces and lines of the file.
 struct LoadReport {
   size_t faces_read = 0;               // faces (polygons) in the file
   size_t triangles_kept = 0;           // triangles in the soup
   size_t polygons_triangulated = 0;    // faces with more than three corners
   size_t dropped_zero_area = 0;        // triangles whose corners are collinear or coincide
   size_t dropped_repeated_vertex = 0;  // triangles that name one vertex index twice
+  size_t lines_read = 0;               // polylines (OBJ `l`) and edges (PLY `edge`)
+  size_t segments_kept = 0;            // segments of those lines
+  size_t dropped_zero_length = 0;      // segments whose two ends coincide
+  bool point_cloud = false;            // no faces and no lines: every vertex is a point
 };
 
 struct LoadedMesh {
-  TriangleSoup soup;
+  TriangleSoup soup;              // the vertices, and the triangles
+  std::vector<Segment> segments;  // indices into soup.vertices
+  std::vector<uint32_t> points;   // indices into soup.vertices
   LoadReport report;
   std::string format;  // human-readable, e.g. "PLY binary little-endian, gzip-compressed"
+
+  // Box around everything that gets rendered: triangles' corners, segments' ends, points.
+  Box3 bounds() const;
 };
 
 // Reads the mesh at `path`; the extension (case-insensitive) selects the format.
@@ -61,5 +78,12 @@ LoadedMesh load_mesh(const std::string& path);
 // Reads a mesh from bytes already in memory. `name` selects the format by its extension,
 // exactly as a path would, and is the FILE of error messages.
 LoadedMesh load_mesh_from_memory(std::string_view bytes, const std::string& name);
+
+// Scales and centres everything (triangles, segments, points) as fit_into_box does a soup.
+void fit_into_box(LoadedMesh& mesh, double size);
+
+// For commands that need a surface of triangles: throws InputError `FILE: WHAT needs
+// triangles, but the file has none (N segments, M points)` when the mesh has no triangle.
+void require_triangles(const LoadedMesh& mesh, const std::string& file, const std::string& what);
 
 }  // namespace convray::mesh

@@ -9,7 +9,7 @@
 namespace convray::mesh {
 namespace {
 
-// assimp stores element counts in an unsigned int.
+// The soup indexes vertices with uint32_t; no element of a file we can read has more.
 constexpr uint64_t kMaxElementCount = 0xffffffffu;
 
 std::optional<PlyType> parse_type(std::string_view name) {
@@ -24,7 +24,8 @@ std::optional<PlyType> parse_type(std::string_view name) {
   return std::nullopt;
 }
 
-// Header lines end in "\n" or "\r\n"; a lone "\r" would make assimp read past its buffer.
+// Header lines end in "\n" or "\r\n". The body starts right after the end_header line's "\n",
+// whatever its first byte is (a binary body may well start with 0x0a or 0x0d 0x0a).
 class HeaderLines {
  public:
   HeaderLines(std::string_view bytes, const std::string& file) : bytes_(bytes), file_(file) {}
@@ -75,15 +76,15 @@ class HeaderParser {
     std::string_view line;
     if (bytes_.substr(0, 3) != "ply" || !lines_.next(line) || trim_blanks(line) != "ply")
       fail(file_, "not a PLY file: it does not start with the line 'ply'");
-    read_format_line();
     while (lines_.next(line)) {
       std::vector<std::string_view> tokens = split(line);
-      if (tokens.empty()) fail(file_, "blank line in the PLY header", lines_.line_number());
-      if (tokens[0] == "comment" || tokens[0] == "obj_info") continue;
-      if (tokens[0] == "element") read_element(tokens);
+      // Blank lines, comments, obj_info and the other lines writers add (with a keyword of
+      // their own or none) carry nothing the body's layout depends on.
+      if (tokens.empty()) continue;
+      if (tokens[0] == "format") read_format(tokens);
+      else if (tokens[0] == "element") read_element(tokens);
       else if (tokens[0] == "property") read_property(tokens);
-      else if (tokens[0] == "end_header" && tokens.size() == 1) return finish();
-      else fail(file_, "unknown PLY header line " + quote_token(line), lines_.line_number());
+      else if (tokens[0] == "end_header") return finish();
     }
     fail(file_, "the PLY header has no end_header line (the file may be truncated)");
   }
@@ -91,12 +92,12 @@ class HeaderParser {
  private:
   [[noreturn]] void fail_here(const std::string& what) { fail(file_, what, lines_.line_number()); }
 
-  void read_format_line() {
-    std::string_view line;
-    if (!lines_.next(line)) fail(file_, "the PLY header ends before its format line");
-    std::vector<std::string_view> tokens = split(line);
-    if (tokens.size() != 3 || tokens[0] != "format" || (tokens[2] != "1.0" && tokens[2] != "1"))
-      fail_here("expected 'format ascii 1.0' (or binary_little_endian, binary_big_endian) as the second line");
+  // The specification puts it second; comments before it do no harm.
+  void read_format(const std::vector<std::string_view>& tokens) {
+    if (format_line_ != 0) fail_here("a second format line (the first is line " + std::to_string(format_line_) + ")");
+    format_line_ = lines_.line_number();
+    if (tokens.size() != 3 || (tokens[2] != "1.0" && tokens[2] != "1"))
+      fail_here("expected 'format ascii 1.0' (or binary_little_endian, binary_big_endian)");
     if (tokens[1] == "ascii") header_.encoding = PlyEncoding::Ascii;
     else if (tokens[1] == "binary_little_endian") header_.encoding = PlyEncoding::BinaryLittleEndian;
     else if (tokens[1] == "binary_big_endian") header_.encoding = PlyEncoding::BinaryBigEndian;
@@ -136,9 +137,7 @@ class HeaderParser {
   }
 
   PlyHeader finish() {
-    for (const PlyElement& element : header_.elements) {
-      if (element.properties.empty()) fail(file_, "element '" + element.name + "' has no properties");
-    }
+    if (format_line_ == 0) fail_here("the PLY header has no format line ('format ascii 1.0' or binary)");
     header_.body_offset = lines_.offset();
     header_.body_line = lines_.line_number() + 1;
     return std::move(header_);
@@ -148,6 +147,7 @@ class HeaderParser {
   HeaderLines lines_;
   const std::string& file_;
   PlyHeader header_;
+  int format_line_ = 0;  // where the format line was; 0 before it
 };
 
 }  // namespace

@@ -1,7 +1,7 @@
 #pragma once
-// The header of a PLY file, parsed strictly: only the lines the PLY specification defines,
-// each in its one correct form. assimp's header parser forgives more, and what it forgives
-// it does not always read the way the writer meant. Internal to src/mesh.
+// The header of a PLY file. The lines that define the body's layout (format, element,
+// property, end_header) must each be in their one correct form; every other line (comment,
+// obj_info, blank lines, other writers' additions) is skipped. Internal to src/mesh.
 #include <cstddef>
 #include <cstdint>
 #include <string>

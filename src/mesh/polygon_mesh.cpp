@@ -25,14 +25,20 @@ void check_vertex_count(const PolygonMesh& polygons, const std::string& file) {
                    " vertices, more than convray can index (4294967295)");
 }
 
+// `what` names the element ("face"), `where` says which (" (face 3)").
+void check_indices(std::span<const int64_t> indices, const std::string& what, const std::string& where,
+                   size_t vertex_count, const std::string& file) {
+  for (int64_t index : indices) {
+    if (index < 0 || static_cast<uint64_t>(index) >= vertex_count)
+      fail(file, what + " refers to vertex " + std::to_string(index) + ", but the file has " +
+                     std::to_string(vertex_count) + " vertices" + where);
+  }
+}
+
 void check_face(std::span<const int64_t> face, size_t f, size_t vertex_count, const std::string& file) {
   if (face.size() < 3)
     fail(file, "face has " + std::to_string(face.size()) + " corners; at least 3 are needed" + in_face(f));
-  for (int64_t index : face) {
-    if (index < 0 || static_cast<uint64_t>(index) >= vertex_count)
-      fail(file, "face refers to vertex " + std::to_string(index) + ", but the file has " +
-                     std::to_string(vertex_count) + " vertices" + in_face(f));
-  }
+  check_indices(face, "face", in_face(f), vertex_count, file);
 }
 
 bool has_repeated_vertex(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
@@ -55,17 +61,9 @@ void keep_proper_triangles(const std::vector<Triangle>& triangles, TriangleSoup&
   }
 }
 
-}  // namespace
-
-LoadedMesh build_soup(PolygonMesh polygons, const std::string& file) {
-  check_vertex_count(polygons, file);
-  check_coordinates_finite(polygons, file);
-  LoadedMesh mesh;
-  mesh.format = polygons.format;
-  mesh.soup.vertices = std::move(polygons.vertices);
+void add_triangles(const PolygonMesh& polygons, LoadedMesh& mesh, const std::string& file) {
   mesh.report.faces_read = polygons.face_count();
   mesh.soup.triangles.reserve(polygons.face_count());
-
   std::vector<uint32_t> corners;
   std::vector<Triangle> triangles;
   for (size_t f = 0; f < polygons.face_count(); ++f) {
@@ -78,6 +76,52 @@ LoadedMesh build_soup(PolygonMesh polygons, const std::string& file) {
     keep_proper_triangles(triangles, mesh.soup, mesh.report);
   }
   mesh.report.triangles_kept = mesh.soup.triangles.size();
+}
+
+// Each pair of consecutive corners of a line is a segment; segments whose ends coincide
+// (one index twice, or two equal positions) are dropped and counted.
+void add_segments(const PolygonMesh& polygons, LoadedMesh& mesh, const std::string& file) {
+  mesh.report.lines_read = polygons.lines.size();
+  const std::vector<Vec3>& positions = mesh.soup.vertices;
+  for (size_t l = 0; l < polygons.lines.size(); ++l) {
+    std::span<const int64_t> line = polygons.lines[l];
+    if (line.size() < 2)
+      fail(file, "line has " + std::to_string(line.size()) + " corners; at least 2 are needed" + in_line(l));
+    check_indices(line, "line", in_line(l), positions.size(), file);
+    for (size_t k = 0; k + 1 < line.size(); ++k) {
+      const auto a = static_cast<uint32_t>(line[k]), b = static_cast<uint32_t>(line[k + 1]);
+      if (positions[a] == positions[b]) {
+        ++mesh.report.dropped_zero_length;
+      } else {
+        mesh.segments.push_back({a, b});
+      }
+    }
+  }
+  mesh.report.segments_kept = mesh.segments.size();
+}
+
+// The file's points; for a file with no faces and no lines, every vertex.
+void add_points(const PolygonMesh& polygons, LoadedMesh& mesh, const std::string& file) {
+  check_indices(polygons.points, "point", "", mesh.soup.vertices.size(), file);
+  mesh.points.assign(polygons.points.begin(), polygons.points.end());
+  if (polygons.face_count() == 0 && polygons.lines.size() == 0 && polygons.points.empty()) {
+    mesh.report.point_cloud = true;
+    mesh.points.resize(mesh.soup.vertices.size());
+    for (size_t v = 0; v < mesh.points.size(); ++v) mesh.points[v] = static_cast<uint32_t>(v);
+  }
+}
+
+}  // namespace
+
+LoadedMesh build_soup(PolygonMesh polygons, const std::string& file) {
+  check_vertex_count(polygons, file);
+  check_coordinates_finite(polygons, file);
+  LoadedMesh mesh;
+  mesh.format = polygons.format;
+  mesh.soup.vertices = std::move(polygons.vertices);
+  add_triangles(polygons, mesh, file);
+  add_segments(polygons, mesh, file);
+  add_points(polygons, mesh, file);
   return mesh;
 }
 

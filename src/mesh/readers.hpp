@@ -1,18 +1,26 @@
 #pragma once
-// The format readers behind load_mesh. Each returns the file's faces as it lists them, or
-// throws InputError; build_soup() then validates and triangulates. Internal to src/mesh.
+// The format readers behind load_mesh, our own, each written from its format's
+// specification. Each returns the file's vertices, faces, lines and points as it lists them
+// (indices counted from 0), or throws InputError; build_soup() then validates, triangulates
+// and splits lines into segments. Internal to src/mesh.
 #include <string>
 #include <string_view>
 
-#include "mesh/format.hpp"
 #include "mesh/polygon_mesh.hpp"
 
 namespace convray::mesh {
 
-// OBJ through tinyobjloader, checked by scan_obj() (src/mesh/obj_check.hpp).
+// OBJ (src/mesh/obj_reader.cpp): `v`, `f`, `l` and `p` lines; text as UTF-8, or UTF-16
+// with a byte-order mark.
 PolygonMesh read_obj(std::string_view text, const std::string& file);
 
-// PLY, STL or OFF through assimp, after the checks of src/mesh/{ply,stl,off}_check.hpp.
-PolygonMesh read_with_assimp(std::string_view bytes, MeshFormat format, const std::string& file);
+// PLY (src/mesh/ply_reader.cpp): text, binary little- and big-endian.
+PolygonMesh read_ply(std::string_view bytes, const std::string& file);
+
+// STL (src/mesh/stl_reader.cpp): text and binary.
+PolygonMesh read_stl(std::string_view bytes, const std::string& file);
+
+// OFF (src/mesh/off_reader.cpp): text and binary, with the optional prefixes.
+PolygonMesh read_off(std::string_view bytes, const std::string& file);
 
 }  // namespace convray::mesh

@@ -12,14 +12,15 @@ Box3 TriangleSoup::bounds() const {
   return box;
 }
 
-void fit_into_box(TriangleSoup& soup, double size) {
-  const Box3 box = soup.bounds();
+void fit_into_box(TriangleSoup& soup, double size) { fit_into_box(soup.vertices, soup.bounds(), size); }
+
+void fit_into_box(std::vector<Vec3>& vertices, const Box3& box, double size) {
   if (box.empty()) return;
   const Vec3 extent = box.extent();
   const double largest = std::max({extent.x, extent.y, extent.z});
   const Vec3 center = 0.5 * (box.lo + box.hi);
   const double scale = largest > 0.0 ? size / largest : 1.0;
-  for (Vec3& v : soup.vertices) v = (v - center) * scale;
+  for (Vec3& v : vertices) v = (v - center) * scale;
 }
 
 }  // namespace convray::mesh

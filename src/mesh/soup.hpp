@@ -35,5 +35,7 @@ struct TriangleSoup {
 // `size`, and centre the bounds at the origin (400 fills (-200,-200,-200)-(200,200,200)).
 // A soup without extent is only centred.
 void fit_into_box(TriangleSoup& soup, double size);
+// The same for any vertices, given the box to fit.
+void fit_into_box(std::vector<Vec3>& vertices, const Box3& box, double size);
 
 }  // namespace convray::mesh

@@ -44,7 +44,7 @@ void parse_component_tail(Parser& parser, Block& block, PendingComponent& compon
   component.texture = modifiers.texture();
 }
 
-SharedTriangles load_mesh_triangles(Parser& parser, const SourceLoc& loc, const std::string& name) {
+SharedSkeleton load_mesh_skeleton(Parser& parser, const SourceLoc& loc, const std::string& name) {
   const std::string path = parser.resolve_file(name, loc);
   try {
     MeshLibrary* library = parser.options().mesh_library.get();
@@ -55,19 +55,28 @@ SharedTriangles load_mesh_triangles(Parser& parser, const SourceLoc& loc, const 
 }
 
 // The component keeps the file's triangles (shared with every frame that reads the file) and
-// the placement, besides the placed copy everything else reads.
+// the placement, besides the placed copy everything else reads; the file's segments and
+// points (polylines, edges, point clouds) are placed too and become components of their own.
 void parse_mesh_component(Parser& parser, Block& block, PendingComponent& component) {
   const std::string name = parser.parse_string();
   ComponentModifiers modifiers(parser, "convolution mesh");
   parse_component_tail(parser, block, component, modifiers);
-  const SharedTriangles local = load_mesh_triangles(parser, component.loc, name);
+  const SharedSkeleton skeleton = load_mesh_skeleton(parser, component.loc, name);
   const scene::Transform& transform = modifiers.transform();
-  component.source = implicit::MeshSource{local, transform.forward()};
-  component.triangles.reserve(local->size());
-  for (const field::Triangle& triangle : *local) {
+  if (!skeleton->triangles.empty()) {
+    // The skeleton owns the triangles: share them with it (shared_ptr's aliasing constructor).
+    const std::shared_ptr<const std::vector<field::Triangle>> local(skeleton, &skeleton->triangles);
+    component.source = implicit::MeshSource{local, transform.forward()};
+  }
+  component.triangles.reserve(skeleton->triangles.size());
+  for (const field::Triangle& triangle : skeleton->triangles) {
     component.triangles.push_back(
         {transform.point(triangle.a), transform.point(triangle.b), transform.point(triangle.c)});
   }
+  component.segments.reserve(skeleton->segments.size());
+  for (const field::Segment& s : skeleton->segments) component.segments.push_back({transform.point(s.a), transform.point(s.b)});
+  component.points.reserve(skeleton->points.size());
+  for (const Vec3& p : skeleton->points) component.points.push_back(transform.point(p));
 }
 
 void parse_triangle_component(Parser& parser, Block& block, PendingComponent& component) {
@@ -156,9 +165,29 @@ bool same_weight(const implicit::Weight& a, const implicit::Weight& b) {
   return a.strength == b.strength && a.radius == b.radius;
 }
 
+// A mesh file's segments and points, each a component of the mesh's weight and texture.
+void add_file_segments_and_points(const PendingComponent& component, const implicit::Weight& weight,
+                                  scene::Implicit& implicit) {
+  implicit::ConvolutionObject& object = implicit.object;
+  for (const field::Segment& segment : component.segments) {
+    add_component_texture(implicit, component.texture);
+    implicit.component_order.emplace_back(Kind::segment, object.segments.size());
+    object.segments.push_back({segment, weight});
+  }
+  for (const Vec3& point : component.points) {
+    add_component_texture(implicit, component.texture);
+    implicit.component_order.emplace_back(Kind::point, object.points.size());
+    object.points.push_back({point, weight});
+  }
+}
+
 // Appends `component` to the vectors of `implicit` and notes its place in listing order.
 void add_component(PendingComponent& component, const implicit::Weight& weight,
                    scene::Implicit& implicit) {
+  if (component.kind == Kind::mesh && (!component.segments.empty() || !component.points.empty())) {
+    add_file_segments_and_points(component, weight, implicit);
+    if (component.triangles.empty()) return;  // a point cloud or a line set
+  }
   implicit::ConvolutionObject& object = implicit.object;
   size_t index = 0;
   switch (component.kind) {

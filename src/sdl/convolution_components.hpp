@@ -21,6 +21,8 @@ struct PendingComponent {
   bool single_triangle = false;  // `triangle { }`: grouped with its neighbours of equal weight
   std::vector<field::Triangle> triangles;  // mesh, triangle
   std::optional<implicit::MeshSource> source;  // mesh: the file's triangles and placement
+  std::vector<field::Segment> segments;    // mesh: the file's polylines and edges, placed
+  std::vector<Vec3> points;                // mesh: the file's points, placed
   field::Segment segment;
   field::Arc arc;
   Vec3 point{0.0};

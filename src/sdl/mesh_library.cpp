@@ -6,18 +6,11 @@
 
 namespace convray::sdl {
 
-SharedTriangles MeshLibrary::read(const std::string& path) {
-  const mesh::LoadedMesh loaded = mesh::load_mesh(path);
-  auto triangles = std::make_shared<std::vector<field::Triangle>>();
-  triangles->reserve(loaded.soup.size());
-  for (size_t t = 0; t < loaded.soup.size(); ++t) {
-    const auto corners = loaded.soup.corners(t);
-    triangles->push_back({corners[0], corners[1], corners[2]});
-  }
-  return triangles;
+SharedSkeleton MeshLibrary::read(const std::string& path) {
+  return std::make_shared<const implicit::MeshSkeleton>(implicit::skeleton_of(mesh::load_mesh(path)));
 }
 
-SharedTriangles MeshLibrary::load(const std::string& path) {
+SharedSkeleton MeshLibrary::load(const std::string& path) {
   // Stamped before reading: a file rewritten while it is read is read again next time.
   std::error_code error;
   const uintmax_t size = std::filesystem::file_size(path, error);
@@ -28,15 +21,15 @@ SharedTriangles MeshLibrary::load(const std::string& path) {
     std::lock_guard lock(mutex_);
     const auto it = entries_.find(path);
     if (it != entries_.end() && it->second.size == size && it->second.modified == ticks) {
-      return it->second.triangles;
+      return it->second.skeleton;
     }
   }
   // Read outside the lock: other files may be read meanwhile (the same one, at worst, twice).
-  SharedTriangles triangles = read(path);
+  SharedSkeleton skeleton = read(path);
   std::lock_guard lock(mutex_);
   ++reads_;
-  entries_[path] = Entry{size, ticks, triangles};
-  return triangles;
+  entries_[path] = Entry{size, ticks, skeleton};
+  return skeleton;
 }
 
 size_t MeshLibrary::reads() const {

@@ -1,8 +1,8 @@
 #pragma once
 // Mesh files read once per animation: the parser asks the library for a convolution mesh's
-// triangles; the same file (resolved path, size and modification time alike) gives the same
-// shared triangles, so that later stages recognise it (implicit::MeshSource, SupportCache).
-// A file that changed on disk is read again. Thread-safe.
+// skeleton (triangles, segments, points); the same file (resolved path, size and modification
+// time alike) gives the same shared skeleton, whose triangles later stages recognise
+// (implicit::MeshSource, SupportCache). A file that changed on disk is read again. Thread-safe.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -10,20 +10,20 @@
 #include <string>
 #include <vector>
 
-#include "field/triangle.hpp"
+#include "implicit/mesh_skeleton.hpp"
 
 namespace convray::sdl {
 
-using SharedTriangles = std::shared_ptr<const std::vector<field::Triangle>>;
+using SharedSkeleton = std::shared_ptr<const implicit::MeshSkeleton>;
 
 class MeshLibrary {
  public:
-  // The triangles of the mesh file at `path` (resolved already): read now, or kept from an
+  // The skeleton of the mesh file at `path` (resolved already): read now, or kept from an
   // earlier call when the file's size and modification time are unchanged. Throws what
   // mesh::load_mesh throws.
-  SharedTriangles load(const std::string& path);
+  SharedSkeleton load(const std::string& path);
   // Reads the file, keeping nothing.
-  static SharedTriangles read(const std::string& path);
+  static SharedSkeleton read(const std::string& path);
 
   size_t reads() const;  // files read (not answered from the library)
   size_t size() const;   // files kept
@@ -32,7 +32,7 @@ class MeshLibrary {
   struct Entry {
     uintmax_t size = 0;
     int64_t modified = 0;  // the file clock's ticks
-    SharedTriangles triangles;
+    SharedSkeleton skeleton;
   };
   mutable std::mutex mutex_;
   std::map<std::string, Entry> entries_;

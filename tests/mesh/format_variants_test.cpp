@@ -19,13 +19,13 @@ TEST(FormatVariants, OffWithCommentsColoursAndCountsOnTheKeywordLine) {
   EXPECT_EQ(triangles_in("OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n", "crlf.off"), 1u);
 }
 
-TEST(FormatVariants, OffFacesOfMoreThanNineCornersAreRefused) {
-  // assimp's OFF reader drops them silently; we say so instead.
+TEST(FormatVariants, OffFacesOfMoreThanNineCorners) {
+  // assimp's OFF reader dropped them silently. Ten corners on the convex parabola y = x^2
+  // are 10 - 2 = 8 triangles.
   std::string off = "OFF\n10 1 0\n";
   for (int k = 0; k < 10; ++k) off += std::to_string(k) + " " + std::to_string(k * k) + " 0\n";
   off += "10 0 1 2 3 4 5 6 7 8 9\n";
-  EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(off, "big.off"); }),
-            "big.off:13: face has 10 corners; the OFF reader handles at most 9 (face 0)");
+  EXPECT_EQ(triangles_in(off, "big.off"), 8u);
 }
 
 TEST(FormatVariants, PlyWithMoreElementsAndProperties) {
@@ -43,24 +43,37 @@ TEST(FormatVariants, PlyWithMoreElementsAndProperties) {
 TEST(FormatVariants, PlyRefusals) {
   const std::string start = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n";
   EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(start + "end_header\n", "a.ply"); }),
-            "a.ply: the PLY header declares no 'face' element (a point cloud has no triangles)");
+            "a.ply: the PLY vertex element has no scalar property 'z'");
   EXPECT_EQ(input_error_of([&] {
-              load_mesh_from_memory(start + "element face 0\nproperty list uchar int vertex_indices\nend_header\n", "z.ply");
+              load_mesh_from_memory(start + "property float z\nelement tristrips 1\nproperty int vertex_indices\n"
+                                            "end_header\n", "b.ply");
             }),
-            "z.ply: the PLY vertex element has no scalar property 'z'");
-  EXPECT_EQ(input_error_of([&] {
-              load_mesh_from_memory(start + "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
-                                            "element face 0\nproperty list uchar int vertex_indices\nend_header\n",
-                                    "b.ply");
-            }),
-            "b.ply: PLY triangle strips (element 'tristrips') are not supported");
+            "b.ply: the PLY tristrips element has no list of integer 'vertex_indices'");
   EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(start + "property int128 z\n", "c.ply"); }),
             "c.ply:6: unknown PLY type 'int128'");
   EXPECT_EQ(input_error_of([&] {
-              load_mesh_from_memory(start + "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                            "end_header\n0 0 0\n1 0 0\n0 1 0\n\n3 0 1 2\n", "d.ply");
+              load_mesh_from_memory("ply\nelement vertex 0\nproperty float x\nend_header\n", "f.ply");
             }),
-            "d.ply:13: blank line where face data was expected (face 0)");
+            "f.ply:4: the PLY header has no format line ('format ascii 1.0' or binary)");
+}
+
+TEST(FormatVariants, PlyDataBeyondWhatTheHeaderDeclaresIsIgnored) {
+  // Values after the declared ones on a line, lines after the last element (VCG writes both).
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 7 7\n1 0 0\n0 1 0\n3 0 1 2 9 9\n"
+      "0 0 1\n";
+  const LoadedMesh mesh = load_mesh_from_memory(ply, "extra.ply");
+  EXPECT_EQ(mesh.soup.vertices.size(), 3u);
+  EXPECT_EQ(mesh.soup.size(), 1u);
+}
+
+TEST(FormatVariants, PlyBlankLinesInTheDataCarryNoValues) {
+  EXPECT_EQ(triangles_in("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                         "0 0 0\n1 0 0\n0 1 0\n\n3 0 1 2\n\n",
+                         "d.ply"),
+            1u);
 }
 
 TEST(FormatVariants, GzipWithSeveralMembers) {
@@ -77,6 +90,27 @@ TEST(FormatVariants, UppercaseGzipExtension) {
   testing::write_gzip(scratch.file("a.gz"), "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(load_mesh_from_memory(testing::read_bytes(scratch.file("a.gz")), "TRI.OFF.GZ").format,
             "OFF, gzip-compressed");
+}
+
+TEST(FormatVariants, StlKeywordsInCapitals) {
+  // Some CAD exporters write the ASCII keywords in capitals.
+  EXPECT_EQ(triangles_in("SOLID part\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"
+                         "ENDLOOP\nENDFACET\nENDSOLID part\n", "caps.stl"),
+            1u);
+}
+
+TEST(FormatVariants, PlyIntegersWrittenAsReals) {
+  // "3.0 0.0 1.0 2.0": whole numbers with a decimal point are the integers they name.
+  EXPECT_EQ(triangles_in("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                         "0 0 0\n1 0 0\n0 1 0\n3.0 0.0 1.0 2e0\n", "reals.ply"),
+            1u);
+  EXPECT_EQ(testing::input_error_of([] {
+              load_mesh_from_memory("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                    "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", "half.ply");
+            }),
+            "half.ply:13: value '1.5' of 'vertex_indices' is not an int (face 0)");
 }
 
 }  // namespace

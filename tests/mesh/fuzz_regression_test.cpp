@@ -16,15 +16,16 @@ const std::string kTriangleStl =
     "  endloop\n endfacet\nendsolid t\n";
 
 TEST(FuzzRegression, ObjSkinWeightOutOfIntRange) {
-  // tinyobjloader converted the joint id to int without a range check (UB). It no longer
-  // sees any line but `v` and `f`.
+  // tinyobjloader (our OBJ reader then) converted the joint id to int without a range check
+  // (UB). Our own reader skips `vw` lines.
   LoadedMesh mesh = load_mesh_from_memory("v 0 0 0\nvw 1 5257311121191336 -0.85\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "w.obj");
   EXPECT_EQ(mesh.soup.size(), 1u);
 }
 
 TEST(FuzzRegression, AsciiStlThatAssimpGivesUpOnLeaked) {
-  // assimp's ASCII STL reader leaks its meshes whenever it throws; here it threw because
-  // it reads a vertex's numbers skipping blanks only, not line ends.
+  // assimp's ASCII STL reader (our STL reader then) leaked its meshes whenever it threw; here
+  // it threw because it reads a vertex's numbers skipping blanks only, not line ends. Ours
+  // wants the numbers on the keyword's line too.
   std::string stl = kTriangleStl;
   stl.replace(stl.find("vertex 1 0 0"), 12, "vertex\r1 0 0");
   EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(stl, "cr.stl"); }),

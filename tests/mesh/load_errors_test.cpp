@@ -48,7 +48,7 @@ TEST(LoadErrors, InfiniteCoordinateInObj) {
 
 TEST(LoadErrors, NanCoordinateInPly) {
   EXPECT_EQ(error_loading(kPlyAsciiHeader + "0 0 0\n1 0 0\n0 nan 0\n1 1 0\n3 0 1 2\n3 1 3 2\n", "nan.ply"),
-            "nan.ply: vertex has a non-finite coordinate (vertex 2)");
+            "nan.ply:12: vertex has a non-finite coordinate (vertex 2)");
 }
 
 TEST(LoadErrors, NanCoordinateInOff) {
@@ -135,7 +135,16 @@ TEST(LoadErrors, TruncatedAsciiPly) {
 
 TEST(LoadErrors, AsciiPlyLineWithTooFewValues) {
   EXPECT_EQ(error_loading(kPlyAsciiHeader + "0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 1\n", "cut.ply"),
-            "cut.ply:15: too few values on the line: 'vertex_indices' is missing (face 1)");
+            "cut.ply:15: too few values on the line: 'vertex_indices' is missing (the header does not match the data) "
+            "(face 1)");
+}
+
+TEST(LoadErrors, BinaryStlLongerThanItsCountIsRead) {
+  // PyMesh's empty.stl: a count of 0 and one byte more than the 84 of the header.
+  EXPECT_EQ(error_loading(std::string(80, ' ') + std::string(4, '\0') + "\n", "empty.stl"),
+            "empty.stl: the file has no vertices, so there is nothing to render");
+  std::string bytes = written(two_triangles(), "long.stl", MeshEncoding::Binary);
+  EXPECT_EQ(load_mesh_from_memory(bytes + "trailing", "long.stl").soup.size(), 2u);
 }
 
 TEST(LoadErrors, TruncatedBinaryStl) {
@@ -147,16 +156,19 @@ TEST(LoadErrors, TruncatedBinaryStl) {
 
 TEST(LoadErrors, TruncatedAsciiStl) {
   std::string bytes = written(two_triangles(), "cut.stl", MeshEncoding::Ascii);
-  EXPECT_EQ(error_loading(bytes.substr(0, bytes.find("endsolid")), "cut.stl"),
-            "cut.stl: ASCII STL: the file ends before 'endsolid' (the file is truncated) (face 2)");
+  // Between facets the end of the file ends the solid (OpenMesh leaves `endsolid` out).
+  EXPECT_EQ(load_mesh_from_memory(bytes.substr(0, bytes.find("endsolid")), "cut.stl").soup.size(), 2u);
+  EXPECT_EQ(error_loading(bytes.substr(0, bytes.rfind("endloop")), "cut.stl"),
+            "cut.stl: ASCII STL: the file ends before 'endsolid' (the file is truncated) (face 1)");
   size_t last_vertex = bytes.rfind("vertex");  // on line 13, in face 1
   EXPECT_EQ(error_loading(bytes.substr(0, last_vertex + 9), "cut.stl"),
             "cut.stl:13: ASCII STL: expected three numbers on the line (face 1)");
 }
 
 TEST(LoadErrors, ObjVertexWithMissingCoordinate) {
-  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 0 1", "cut.obj"),
-            "cut.obj:3: vertex has 2 coordinates; 3 are needed (vertex 2)");
+  // Two coordinates are a 2D vertex (z = 0); one is too few.
+  EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 0", "cut.obj"),
+            "cut.obj:3: vertex has 1 coordinate; at least 2 are needed (vertex 2)");
 }
 
 TEST(LoadErrors, ObjFaceWithMissingCorner) {
@@ -182,12 +194,15 @@ TEST(LoadErrors, TruncatedOffVertices) {
 
 TEST(LoadErrors, OffFaceWithMissingIndex) {
   EXPECT_EQ(error_loading("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 1\n", "cut.off"),
-            "cut.off:8: face line has fewer indices than its 3 corners (face 1)");
+            "cut.off: the file ends in the middle of face 1: 2 of its 3 corners are there (the file is truncated) "
+            "(face 1)");
 }
 
 TEST(LoadErrors, OffVertexWithMissingCoordinate) {
+  // OFF is whitespace-separated: vertex 1 takes its z from the next line (whose rest is
+  // skipped as colours would be), vertex 2 takes the face's line, and the face is missing.
   EXPECT_EQ(error_loading("OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", "cut.off"),
-            "cut.off:4: vertex line has 2 numbers; 3 are needed (vertex 1)");
+            "cut.off: the file ends after 0 of the 1 faces the header declares (the file is truncated) (face 0)");
 }
 
 // ---- Not a mesh at all ----------------------------------------------------------------
@@ -224,11 +239,16 @@ TEST(LoadErrors, EmptyFile) {
   }
 }
 
-TEST(LoadErrors, NoTrianglesAtAll) {
-  EXPECT_EQ(error_loading("# nothing but vertices\nv 0 0 0\nv 1 0 0\n", "points.obj"),
-            "points.obj: the file has no faces, so there are no triangles to render");
+TEST(LoadErrors, NothingToRender) {
+  // Vertices alone are a point cloud; a file with no vertex at all has nothing.
+  EXPECT_EQ(error_loading("# nothing but a comment\n", "none.obj"),
+            "none.obj: the file has no vertices, so there is nothing to render");
+  EXPECT_EQ(error_loading("OFF\n0 0 0\n", "none.off"), "none.off: the file has no vertices, so there is nothing to render");
   EXPECT_EQ(error_loading("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n", "flat.obj"),
-            "flat.obj: no triangles left: all 2 faces are degenerate (1 with zero area, 1 with a repeated vertex)");
+            "flat.obj: nothing left to render: all 2 faces are degenerate (1 with zero area, 1 with a repeated "
+            "vertex)");
+  EXPECT_EQ(error_loading("v 0 0 0\nv 0 0 0\nl 1 2 1\n", "dot.obj"),
+            "dot.obj: nothing left to render: all 2 segments of the 1 lines have zero length");
 }
 
 const std::string kGarbage("\x8f\x01garbage\x00\xff\x13\x37 not a mesh \x7f\x02", 26);
@@ -238,8 +258,10 @@ TEST(LoadErrors, GarbageBytes) {
   EXPECT_EQ(error_loading(kGarbage, "junk.obj"),
             "junk.obj: the file contains the control byte 0x01 at offset 1, which has no place in an OBJ (text) file");
   EXPECT_EQ(error_loading(kGarbage, "junk.off"),
-            "junk.off: the file contains a control byte at offset 1, which has no place in an OFF (text) file; "
-            "binary OFF is not supported");
+            "junk.off:1: not an OFF file: it does not start with the keyword OFF (or COFF, NOFF, STOFF, 4OFF, ...)");
+  EXPECT_EQ(error_loading("OFF\n3 1 0\n0 0 0\x01\n", "ctl.off"),
+            "ctl.off: the file contains a control byte at offset 15, which has no place in an OFF text file (binary "
+            "OFF starts with 'OFF BINARY')");
   EXPECT_EQ(error_loading(kGarbage, "junk.stl"),
             "junk.stl: not an STL file: too short for a binary STL (26 bytes, the header alone is 84) and not "
             "ASCII STL (it does not start with 'solid')");

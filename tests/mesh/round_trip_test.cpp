@@ -93,14 +93,27 @@ Vec3 rounded_to_float(const Vec3& p) {
   return Vec3(rounded_to_float(p.x), rounded_to_float(p.y), rounded_to_float(p.z));
 }
 
-TEST(RoundTrip, AssimpFormatsRoundCoordinatesToFloat) {
-  // assimp (as Debian builds it) stores positions in float32: a documented limitation.
+TEST(RoundTrip, PlyDoublesAreExact) {
+  // Our writer declares the PLY coordinates double; binary and ASCII alike come back exactly.
+  ScratchDirectory scratch;
+  TriangleSoup soup = icosphere(Vec3(0.1, 0.2, 0.3), 1.0 / 3.0, 1);  // nothing here is a float
+  for (MeshEncoding encoding : {MeshEncoding::Binary, MeshEncoding::Ascii}) {
+    save_mesh(soup, scratch.file("precise.ply"), encoding);
+    EXPECT_EQ(load_mesh(scratch.file("precise.ply")).soup.vertices, soup.vertices);
+  }
+}
+
+TEST(RoundTrip, StlRoundsCoordinatesToFloat) {
+  // Binary STL stores float32 by definition.
   ScratchDirectory scratch;
   TriangleSoup soup = icosphere(Vec3(0.1, 0.2, 0.3), 1.0 / 3.0, 1);
-  save_mesh(soup, scratch.file("precise.ply"), MeshEncoding::Binary);
-  std::vector<Vec3> loaded = load_mesh(scratch.file("precise.ply")).soup.vertices;
-  ASSERT_EQ(loaded.size(), soup.vertices.size());
-  for (size_t v = 0; v < loaded.size(); ++v) EXPECT_EQ(loaded[v], rounded_to_float(soup.vertices[v])) << v;
+  save_mesh(soup, scratch.file("precise.stl"), MeshEncoding::Binary);
+  LoadedMesh loaded = load_mesh(scratch.file("precise.stl"));
+  ASSERT_EQ(loaded.soup.size(), soup.size());
+  for (size_t t = 0; t < soup.size(); ++t) {
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(loaded.soup.corners(t)[k], rounded_to_float(soup.corners(t)[k])) << t;
+  }
 }
 
 TEST(RoundTrip, ExtensionsAreCaseInsensitive) {

@@ -66,19 +66,19 @@ TEST(MeshLibrary, AChangedFileIsReadAgain) {
   const auto file = folder.path / "square.obj";
   write_square(file, 1);
   MeshLibrary library;
-  const SharedTriangles first = library.load(file.string());
+  const SharedSkeleton first = library.load(file.string());
   EXPECT_EQ(library.load(file.string()).get(), first.get());
   // Rewritten with another size and an older time stamp.
   write_square(file, 20);
   std::filesystem::last_write_time(file,
                                    std::filesystem::last_write_time(file) - std::chrono::hours(1));
-  const SharedTriangles second = library.load(file.string());
+  const SharedSkeleton second = library.load(file.string());
   EXPECT_NE(second.get(), first.get());
   EXPECT_EQ(library.reads(), 2u);
   EXPECT_EQ(library.size(), 1u);
-  ASSERT_EQ(second->size(), 2u);
+  ASSERT_EQ(second->triangles.size(), 2u);
   double largest = 0.0;
-  for (const field::Triangle& t : *second) largest = std::max({largest, t.a.x, t.b.x, t.c.x});
+  for (const field::Triangle& t : second->triangles) largest = std::max({largest, t.a.x, t.b.x, t.c.x});
   EXPECT_EQ(largest, 20.0);
   // Only the time stamp changed: read again too.
   std::filesystem::last_write_time(file,
@@ -115,6 +115,30 @@ TEST(MeshLibrary, ThePlacementOfTheFilesTrianglesGivesTheComponents) {
     }
   }
   EXPECT_FALSE(object.meshes[1].source);  // inline triangles have no file
+}
+
+TEST(MeshLibrary, AFilesPointsAndSegmentsArePlacedComponentsOfTheMeshsWeight) {
+  // A point cloud of two points and a polyline of two segments, in one OBJ (no faces).
+  const Folder folder("convray_mesh_library_skeleton");
+  std::ofstream(folder.path / "skeleton.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3\np 1 3\n";
+  const std::string path = (folder.path / "skeleton.obj").string();
+  const auto result = parse("convolution { radius 0.5 threshold 0.3 mesh { \"" + path +
+                            "\" strength 2 scale 2 translate <0, 0, 5> } }");
+  const scene::Implicit& implicit = shape_of<scene::Implicit>(only_object(result));
+  const implicit::ConvolutionObject& object = implicit.object;
+  EXPECT_TRUE(object.meshes.empty());  // no triangles: no mesh component
+  ASSERT_EQ(object.segments.size(), 2u);
+  ASSERT_EQ(object.points.size(), 2u);
+  // Placed by scale 2 then translate <0, 0, 5>; the radius scales with them.
+  EXPECT_EQ(object.segments[1].segment.a, Vec3(2, 0, 5));
+  EXPECT_EQ(object.segments[1].segment.b, Vec3(2, 2, 5));
+  EXPECT_EQ(object.points[1].center, Vec3(2, 2, 5));
+  for (const auto& point : object.points) {
+    EXPECT_EQ(point.weight.strength, 2.0);
+    EXPECT_EQ(point.weight.radius, 1.0);
+  }
+  EXPECT_EQ(object.segments[0].weight.radius, 1.0);
+  EXPECT_EQ(implicit.component_order.size(), 4u);
 }
 
 }  // namespace
