@@ -123,7 +123,8 @@ TEST(MeshLibrary, AFilesPointsAndSegmentsArePlacedComponentsOfTheMeshsWeight) {
   std::ofstream(folder.path / "skeleton.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nl 1 2 3\np 1 3\n";
   const std::string path = (folder.path / "skeleton.obj").string();
   const auto result = parse("convolution { radius 0.5 threshold 0.3 mesh { \"" + path +
-                            "\" strength 2 scale 2 translate <0, 0, 5> } }");
+                            "\" strength 2 scale 2 translate <0, 0, 5> } }",
+                            reading_from(folder.path.string()));
   const scene::Implicit& implicit = shape_of<scene::Implicit>(only_object(result));
   const implicit::ConvolutionObject& object = implicit.object;
   EXPECT_TRUE(object.meshes.empty());  // no triangles: no mesh component
