@@ -195,7 +195,6 @@ void write_image_atomically(const std::string& path, const ImagePixels& pixels) 
       pixels.rgb.size() != 3 * size_t(pixels.width) * size_t(pixels.height)) {
     throw std::invalid_argument("write_image_atomically: pixel count does not match the size");
   }
-  check_writable_destination(path, "the image");
   const std::vector<float> values = encoded_for(format, pixels);
   const std::vector<unsigned char> bytes = encode_in_memory(path, format, pixels, values);
   if (bytes.empty()) return write_by_name(path, format, pixels, values);
