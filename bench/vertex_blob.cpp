@@ -145,8 +145,8 @@ void write_scene(const Options& o, const std::vector<Vec3>& centres, double thre
   std::fprintf(f, "blob {\n  threshold %.17g\n", threshold);
   for (const Vec3& c : centres)
     std::fprintf(f, "  sphere { %s, %.17g, 1 }\n", vec(c).c_str(), o.radius);
-  // The defaults of `convray quick` (src/render/shading.hpp: Material, Lighting): POV-Ray's
-  // ambient, diffuse and white phong highlight are the same Phong terms.
+  // The defaults of `convray quick` (src/scene/quick_scene.cpp: quick_texture): the same
+  // POV-Ray finish.
   std::fprintf(f,
                "  pigment { color rgb <0.80, 0.60, 0.42> }\n"
                "  finish { ambient 0.08 diffuse 0.85 phong 0.30 phong_size 40 }\n}\n");

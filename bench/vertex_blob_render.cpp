@@ -1,7 +1,7 @@
 // convray's side of the vertex-blob comparison (bench/table1.sh, docs/benchmarks.md): the blob
 // that bench/vertex_blob writes for POV-Ray, built as a ConvolutionObject of blob sphere
-// components and rendered by render::render_image with the camera, light and Phong shading of
-// table1.sh. Times the surface build and the render separately (wall clock), so the time of
+// components and rendered by render::render_scene (as `convray quick` renders) with the camera
+// and light of table1.sh. Times the surface build and the render separately (wall clock), so the time of
 // parsing the .pov file, once the scene parser exists, can be added to compare with POV-Ray.
 //
 //   vertex_blob_render MESH --radius R [--offset D] [--fit-box 400] [--size WxH]
@@ -21,11 +21,12 @@
 #include <optional>
 #include <string>
 
+#include "geometry/world.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "mesh/load.hpp"
-#include "render/convolution_traceable.hpp"
 #include "render/image_file.hpp"
-#include "render/render_image.hpp"
+#include "render/render_scene.hpp"
+#include "scene/quick_scene.hpp"
 #include "vertex_blob_scene.hpp"
 
 namespace {
@@ -103,16 +104,10 @@ double cpu_seconds() {
 }
 
 // The view and light of bench/table1.sh.
-render::CameraSpec table1_camera(const Options& o) {
-  return {Vec3(-300, 200, -600), Vec3(0.0), 42.0, o.width, o.height};
+scene::Camera table1_camera(const Options& o) {
+  return scene::look_at_camera({Vec3(-300, 200, -600), Vec3(0.0), 42.0, o.width, o.height});
 }
-
-render::Lighting table1_lighting(const Options& o) {
-  render::Lighting lighting;
-  lighting.light.position = Vec3(-300, 500, -500);
-  lighting.shadow_bias = 1e-5 * o.radius;  // as `convray quick`: hits are polished to rounding
-  return lighting;
-}
+const Vec3 kTable1Light(-300, 500, -500);
 
 void print_counters(const render::RenderStats& s) {
   const implicit::TraceStats& t = s.trace;
@@ -143,20 +138,20 @@ int main(int argc, char** argv) {
     std::printf("components: %zu\nradius: %.17g\nthreshold: %.17g\n", blob.centres.size(),
                 o.radius, blob.threshold);
 
-    const render::Camera camera(table1_camera(o));
-    const render::Lighting lighting = table1_lighting(o);
+    const scene::Scene scene = scene::quick_scene(object, table1_camera(o), kTable1Light);
+    render::RenderSettings settings;
+    settings.width = o.width;
+    settings.height = o.height;
+    settings.ray_offset = 1e-5 * o.radius;  // as `convray quick`: hits are polished to rounding
+    const implicit::Tracer tracer = o.reference ? implicit::Tracer::reference : implicit::Tracer::fast;
     double best_build = 1e300, best_render = 1e300, best_cpu = 1e300;
     for (int k = 0; k < o.repeat; ++k) {
       Clock::time_point start = Clock::now();
-      const implicit::ConvolutionSurface surface(object);
+      const geometry::World world(scene, nullptr, tracer);
       const double build = seconds_since(start);
       start = Clock::now();
       const double cpu_start = cpu_seconds();
-      const render::ConvolutionTraceable fast(surface);
-      const render::ReferenceTraceable reference(surface);
-      const render::Traceable& scene =
-          o.reference ? static_cast<const render::Traceable&>(reference) : fast;
-      const render::RenderResult result = render::render_image(scene, camera, lighting);
+      const render::RenderResult result = render::render_scene(scene, world, settings);
       const double render_s = seconds_since(start), cpu = cpu_seconds() - cpu_start;
       std::printf("run %d: build %.3f s, render %.3f s, total %.3f s, render cpu %.3f s\n",
                   k + 1, build, render_s, build + render_s, cpu);

@@ -8,17 +8,18 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "scene/quick_scene.hpp"
 #include "app/short_number.hpp"
+#include "geometry/implicit_shape.hpp"
+#include "geometry/world.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_skeleton.hpp"
 #include "implicit/threshold.hpp"
 #include "mesh/load.hpp"
 #include "mesh/skeleton_stats.hpp"
-#include "render/camera.hpp"
-#include "render/convolution_traceable.hpp"
 #include "render/image_file.hpp"
 #include "render/progress.hpp"
-#include "render/render_image.hpp"
+#include "render/render_scene.hpp"
 #include "util/error.hpp"
 
 namespace convray::app {
@@ -87,26 +88,23 @@ std::string skeleton_summary(const QuickObject& model) {
 
 // The camera the options ask for; POV-Ray's own checks (distinct points, a view that is not
 // vertical) reported as command-line errors.
-render::Camera make_camera(const render::CameraSpec& spec) {
+scene::Camera make_camera(const scene::LookAtView& view) {
   try {
-    return render::Camera(spec);
+    return scene::look_at_camera(view);
   } catch (const std::invalid_argument& e) {
     throw InputError(kCommandLine, std::string("--camera/--look-at: ") + e.what());
   }
 }
 
-render::CameraSpec camera_spec(const QuickOptions& o, const Box3& bounds) {
+scene::LookAtView camera_view(const QuickOptions& o, const Box3& bounds) {
   if (o.camera && o.look_at) return {*o.camera, *o.look_at, o.angle, o.width, o.height};
-  return render::frame_bounds(bounds, o.width, o.height, o.angle);
+  return scene::frame_bounds(bounds, o.width, o.height, o.angle);
 }
 
-render::Lighting make_lighting(const QuickOptions& o, const render::Camera& camera,
-                               const Box3& bounds, double radius) {
-  render::Lighting lighting;
-  lighting.light.position = o.light ? *o.light : render::default_light_position(camera, bounds);
-  // Hit points are polished to rounding level; features are no thinner than about R.
-  lighting.shadow_bias = 1e-5 * radius;
-  return lighting;
+// The one convolution object of a quick scene (placed as it is: no transform), as the world
+// built it.
+const implicit::ConvolutionSurface& quick_surface(const geometry::World& world) {
+  return dynamic_cast<const geometry::ImplicitShape&>(world.shape(0)).surface();
 }
 
 void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surface,
@@ -147,30 +145,35 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
   // Everything that can be checked before the work starts is checked first.
   render::check_image_destination(o.output);
   if (o.radius) quick_threshold(o, *o.radius);
-  if (o.camera && o.look_at) make_camera(camera_spec(o, Box3{}));
+  if (o.camera && o.look_at) make_camera(camera_view(o, Box3{}));
 
   PhaseTimes times;
   Clock::time_point start = Clock::now();
-  const QuickObject model = load_object(o);
+  QuickObject model = load_object(o);
   times.load = seconds_since(start);
-
-  start = Clock::now();
-  const implicit::ConvolutionSurface surface(model.object);
-  times.build = seconds_since(start);
   const double radius = model.radius, threshold = model.object.threshold;
 
+  // The camera waits for the bounds, which the world knows once built; it is set after.
   start = Clock::now();
-  const Box3 bounds = surface.bounds();
-  const render::Camera camera = make_camera(camera_spec(o, bounds));
-  const render::Lighting lighting = make_lighting(o, camera, bounds, radius);
-  const render::ConvolutionTraceable fast(surface);
-  const render::ReferenceTraceable reference(surface);
-  const render::Traceable& traceable =
-      o.reference ? static_cast<const render::Traceable&>(reference) : fast;
+  scene::Scene view = scene::quick_scene(std::move(model.object), scene::Camera{}, Vec3(0.0));
+  const geometry::World world(view, nullptr,
+                              o.reference ? implicit::Tracer::reference : implicit::Tracer::fast);
+  times.build = seconds_since(start);
+
+  start = Clock::now();
+  const Box3 bounds = world.bounds();
+  view.camera = make_camera(camera_view(o, bounds));
+  view.lights.front().position =
+      o.light ? *o.light : scene::default_light_position(view.camera, bounds);
+  render::RenderSettings settings;
+  settings.width = o.width;
+  settings.height = o.height;
+  // Hit points are polished to rounding level; features are no thinner than about R.
+  settings.ray_offset = 1e-5 * radius;
   // A bar only where someone watches: on a terminal, never into a pipe or a log file.
   render::Progress progress("render", uint64_t(o.width) * uint64_t(o.height), err,
                             render::Progress::stderr_is_terminal());
-  const render::RenderResult result = render::render_image(traceable, camera, lighting, &progress);
+  const render::RenderResult result = render::render_scene(view, world, settings, &progress);
   times.render = seconds_since(start);
 
   start = Clock::now();
@@ -182,7 +185,7 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
       << ", T = " << number(threshold) << "): wrote " << o.output << " (" << o.width << "x"
       << o.height << ", " << number(times.load + times.build + times.render + times.write)
       << " s)\n";
-  if (o.stats) print_stats(o, surface, model, result.stats, times, out);
+  if (o.stats) print_stats(o, quick_surface(world), model, result.stats, times, out);
 }
 
 }  // namespace

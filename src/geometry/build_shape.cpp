@@ -43,7 +43,8 @@ void require(bool ok, const char* message) {
 
 class ShapeBuilder {
  public:
-  explicit ShapeBuilder(implicit::SupportCache* cache) : cache_(cache) {}
+  ShapeBuilder(implicit::SupportCache* cache, implicit::Tracer tracer)
+      : cache_(cache), tracer_(tracer) {}
   ShapePtr build(const scene::Object& object, const Inherited& parent);
 
  private:
@@ -66,6 +67,7 @@ class ShapeBuilder {
   scene::TexturePtr default_texture_ =
       std::make_shared<const scene::Texture>(scene::default_texture());
   implicit::SupportCache* cache_;  // for convolution objects' meshes; may be null
+  implicit::Tracer tracer_;        // how quartic-kernel convolution surfaces are traced
 };
 
 SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
@@ -150,7 +152,7 @@ ShapePtr ShapeBuilder::make(const scene::Implicit& i, const Inherited& own) cons
   if (i.object.kernel.type == implicit::KernelType::cauchy) {
     return std::make_unique<CauchyShape>(i, surface_for(own));
   }
-  return std::make_unique<ImplicitShape>(i, surface_for(own), cache_);
+  return std::make_unique<ImplicitShape>(i, surface_for(own), cache_, tracer_);
 }
 
 ShapePtr ShapeBuilder::make(const scene::Csg& c, const Inherited& own) {
@@ -202,8 +204,9 @@ ShapePtr ShapeBuilder::build(const scene::Object& object, const Inherited& paren
 
 }  // namespace
 
-ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache) {
-  ShapeBuilder builder(cache);
+ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache,
+                     implicit::Tracer tracer) {
+  ShapeBuilder builder(cache, tracer);
   return builder.build(object, Inherited{});
 }
 

@@ -42,8 +42,8 @@ size_t component_count(const implicit::ConvolutionObject& o, Kind kind) {
 }  // namespace
 
 ImplicitShape::ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surface,
-                             implicit::SupportCache* cache)
-    : surface_(record.object, cache),
+                             implicit::SupportCache* cache, implicit::Tracer tracer)
+    : surface_(record.object, cache, tracer),
       is_blob_(record.is_blob),
       object_surface_(std::move(surface)) {
   if (!record.component_textures.empty()) index_components(record);

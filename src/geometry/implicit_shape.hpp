@@ -21,9 +21,11 @@ class ImplicitShape final : public Shape {
  public:
   // Throws std::invalid_argument for what ConvolutionSurface refuses (a radius that is not
   // positive, a threshold that is not positive) and for component textures that name no
-  // component. `cache` (optional) provides the meshes' hierarchies (support_cache.hpp).
+  // component. `cache` (optional) provides the meshes' hierarchies (support_cache.hpp);
+  // `tracer` picks the fast path or the exact reference twin.
   ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surface,
-                implicit::SupportCache* cache = nullptr);
+                implicit::SupportCache* cache = nullptr,
+                implicit::Tracer tracer = implicit::Tracer::fast);
 
   Box3 bounds() const override;
   void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,

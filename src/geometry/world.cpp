@@ -41,12 +41,12 @@ struct World::Index {
   Box3 bounds;                     // the union of the finite bounds
 };
 
-World::World(const scene::Scene& scene, implicit::SupportCache* cache) {
+World::World(const scene::Scene& scene, implicit::SupportCache* cache, implicit::Tracer tracer) {
   auto index = std::make_unique<Index>();
   std::vector<Box3> boxes;
   for (const scene::ObjectPtr& object : scene.objects) {
     if (!object) continue;
-    ShapePtr shape = build_shape(*object, cache);
+    ShapePtr shape = build_shape(*object, cache, tracer);
     const Box3 box = shape->bounds();
     const size_t id = shapes_.size();
     index->inside_boxes.push_back(shape->inside_bounds());

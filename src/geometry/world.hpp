@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/shape.hpp"
+#include "implicit/tracer.hpp"
 #include "scene/scene.hpp"
 
 namespace convray::implicit {
@@ -20,13 +21,16 @@ namespace convray::geometry {
 // (its transform moves them with it); a child without texture or interior takes its
 // parent's, an object without any gets scene::default_texture() and Interior{}.
 // Convolution objects take their meshes' hierarchies from `cache` when given one (animations,
-// implicit/support_cache.hpp); the shapes answer the same either way.
-ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache = nullptr);
+// implicit/support_cache.hpp); the shapes answer the same either way. `tracer` picks how
+// convolution surfaces are traced: the fast path, or its exact reference twin.
+ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache = nullptr,
+                     implicit::Tracer tracer = implicit::Tracer::fast);
 
 class World {
  public:
-  // Objects are built one after the other; `cache` (optional) is handed to each.
-  explicit World(const scene::Scene& scene, implicit::SupportCache* cache = nullptr);
+  // Objects are built one after the other; `cache` (optional) and `tracer` are handed to each.
+  explicit World(const scene::Scene& scene, implicit::SupportCache* cache = nullptr,
+                 implicit::Tracer tracer = implicit::Tracer::fast);
   ~World();
   World(World&&) noexcept;
 
@@ -50,6 +54,8 @@ class World {
   void shadow_crossings_brute_force(const Ray& ray, double tmin, double tmax,
                                     std::vector<Crossing>& out, TraceStats& stats) const;
   size_t object_count() const { return shapes_.size(); }
+  // The shape built for the scene's i-th object (i < object_count()).
+  const Shape& shape(size_t i) const { return *shapes_[i]; }
 
  private:
   struct Index;  // a BVH over the bounded objects' boxes, and the list of unbounded ones

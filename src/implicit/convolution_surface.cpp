@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "implicit/reference_tracer.hpp"
 #include "implicit/support_cache.hpp"
 #include "implicit/surface_impl.hpp"
 #include "implicit/surface_roots.hpp"
@@ -153,13 +154,17 @@ const ConvolutionObject& require_quartic(const ConvolutionObject& object) {
 }
 }  // namespace
 
-ConvolutionSurface::ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache)
-    : impl_(std::make_unique<Impl>(require_quartic(object), cache)) {}
+ConvolutionSurface::ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache,
+                                       Tracer tracer)
+    : impl_(std::make_unique<Impl>(require_quartic(object), cache)) {
+  impl_->tracer = tracer;
+}
 ConvolutionSurface::~ConvolutionSurface() = default;
 ConvolutionSurface::ConvolutionSurface(ConvolutionSurface&&) noexcept = default;
 ConvolutionSurface& ConvolutionSurface::operator=(ConvolutionSurface&&) noexcept = default;
 
 double ConvolutionSurface::threshold() const { return impl_->threshold; }
+Tracer ConvolutionSurface::tracer() const { return impl_->tracer; }
 Box3 ConvolutionSurface::bounds() const { return impl_->index->bounds(); }
 size_t ConvolutionSurface::primitive_count() const { return impl_->index->size(); }
 
@@ -192,11 +197,13 @@ void ConvolutionSurface::component_values(const Vec3& p,
 
 void ConvolutionSurface::roots(const Ray& ray, double tmin, double tmax, std::vector<double>& out,
                                TraceStats& stats) const {
+  if (impl_->tracer == Tracer::reference) return reference_roots(*this, ray, tmin, tmax, out, stats);
   find_roots(*impl_, ray, tmin, tmax, RootMode::all, out, stats);
 }
 
 std::optional<SurfaceHit> ConvolutionSurface::first_hit(const Ray& ray, double tmin, double tmax,
                                                         TraceStats& stats) const {
+  if (impl_->tracer == Tracer::reference) return reference_first_hit(*this, ray, tmin, tmax, stats);
   thread_local std::vector<double> found;
   found.clear();
   std::optional<Vec3> gradient;
@@ -210,6 +217,11 @@ bool ConvolutionSurface::occluded(const Ray& ray, double tmin, double tmax,
                                   TraceStats& stats) const {
   thread_local std::vector<double> found;
   found.clear();
+  if (impl_->tracer == Tracer::reference) {
+    reference_roots(*this, ray, tmin, tmax, found, stats);
+    // The contract asks for [tmin, tmax]; filter anyway, so a root just outside never shadows.
+    return std::any_of(found.begin(), found.end(), [&](double t) { return t >= tmin && t <= tmax; });
+  }
   find_roots(*impl_, ray, tmin, tmax, RootMode::any, found, stats);
   return !found.empty();
 }

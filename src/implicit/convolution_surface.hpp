@@ -12,6 +12,7 @@
 #include "implicit/convolution_object.hpp"
 #include "implicit/ray.hpp"
 #include "implicit/trace_stats.hpp"
+#include "implicit/tracer.hpp"
 
 namespace convray::implicit {
 
@@ -21,7 +22,8 @@ class ConvolutionSurface {
  public:
   // With a cache, mesh components that carry a MeshSource take the hierarchy over their
   // supports from it (built there once, then shared); the answers are the same either way.
-  explicit ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache = nullptr);
+  explicit ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache = nullptr,
+                              Tracer tracer = Tracer::fast);
   ~ConvolutionSurface();
   ConvolutionSurface(ConvolutionSurface&&) noexcept;
   ConvolutionSurface& operator=(ConvolutionSurface&&) noexcept;
@@ -44,6 +46,8 @@ class ConvolutionSurface {
     double value = 0.0;
   };
   void component_values(const Vec3& p, std::vector<ComponentValue>& out) const;
+
+  Tracer tracer() const;
 
   // Every t in [tmin, tmax] where F(ray.at(t)) = T, ascending, each polished on the exact field.
   void roots(const Ray& ray, double tmin, double tmax, std::vector<double>& out,

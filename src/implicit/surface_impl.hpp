@@ -48,6 +48,7 @@ struct ConvolutionSurface::Impl {
   // (re-solving the supports that straddle a chunk's end costs little) and where a line
   // through the bounds crosses enough supports that stopping early beats the extra traversals.
   bool gather_in_chunks = false;
+  Tracer tracer = Tracer::fast;
   std::unique_ptr<accel::SupportIndex> index;  // built last, over the arrays above
 
   Impl(const ConvolutionObject& object, SupportCache* cache);

@@ -9,8 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "analytic_shapes.hpp"
-#include "render/render_image.hpp"
+#include "geometry/world.hpp"
+#include "render/render_scene.hpp"
+#include "scene_records.hpp"
 
 namespace convray::render {
 namespace {
@@ -41,12 +42,16 @@ class PovRayCamera : public ::testing::TestWithParam<const char*> {};
 TEST_P(PovRayCamera, SphereCoversTheSamePixelsAsPovRay) {
   const Mask pov = povray_mask(GetParam());
   ASSERT_GT(pov.width, 0);
-  const testing::SphereShape sphere(Vec3(0.7, 0.45, 0), 0.5);
-  const Camera camera({Vec3(0.3, 0.4, -5), Vec3(0.1, 0.05, 0), 40.0, pov.width, pov.height});
-  Lighting lighting;
-  lighting.background = Vec3(0.0);
-  lighting.light.position = Vec3(0, 0, -5);
-  const Film film = render_image(sphere, camera, lighting).film;
+  scene::Scene scene;
+  scene.objects.push_back(
+      testing::sphere(Vec3(0.7, 0.45, 0), 0.5, testing::glowing(testing::rgb(1, 1, 1))));
+  scene.camera = testing::look_at_camera(Vec3(0.3, 0.4, -5), Vec3(0.1, 0.05, 0), 40.0, pov.width,
+                                         pov.height);
+  const geometry::World world(scene);
+  RenderSettings settings;
+  settings.width = pov.width;
+  settings.height = pov.height;
+  const Film film = render_scene(scene, world, settings).film;
 
   int differ = 0, hits = 0;
   for (int j = 0; j < pov.height; ++j) {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <utility>
 
-#include "render/camera.hpp"
+#include "scene/look_at_camera.hpp"
 #include "scene/scene.hpp"
 
 namespace convray::testing {
@@ -65,16 +65,10 @@ inline scene::Light point_light(const Vec3& position, const Vec3& color = Vec3(1
 }
 
 // The scene camera of POV-Ray's `camera { location L look_at A angle a }` with
-// `right x*W/H` (render::Camera reproduces POV-Ray's frame).
+// `right x*W/H` (scene::look_at_camera reproduces POV-Ray's frame).
 inline scene::Camera look_at_camera(const Vec3& location, const Vec3& look_at, double angle,
                                     int width, int height) {
-  const render::Camera camera({location, look_at, angle, width, height});
-  scene::Camera record;
-  record.location = camera.location();
-  record.direction = camera.direction();
-  record.right = camera.right();
-  record.up = camera.up();
-  return record;
+  return scene::look_at_camera({location, look_at, angle, width, height});
 }
 
 // An orthographic camera at `location` looking along +z, showing `width` x `height` units.

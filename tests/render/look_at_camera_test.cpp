@@ -1,6 +1,8 @@
-// The camera reproduces POV-Ray's perspective camera: directions checked against vectors
-// worked out by hand from POV-Ray's documented conventions.
-#include "render/camera.hpp"
+// The look_at camera (scene/look_at_camera.hpp, as `convray quick` sets it up, seen through
+// render/scene_camera.hpp) reproduces POV-Ray's perspective camera: directions checked against
+// vectors worked out by hand from POV-Ray's documented conventions; and quick's automatic
+// framing and light (scene/quick_scene.hpp) show the whole object.
+#include "scene/look_at_camera.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +11,36 @@
 #include <stdexcept>
 #include <utility>
 
+#include "render/scene_camera.hpp"
+#include "scene/quick_scene.hpp"
+
 namespace convray::render {
+using implicit::Ray;
 namespace {
 
 constexpr double kTol = 1e-12;
+
+using scene::default_light_position;
+using scene::frame_bounds;
+using scene::LookAtView;
+
+// The camera record of a look_at view with the rays the renderer makes of it.
+class Camera {
+ public:
+  explicit Camera(const LookAtView& view)
+      : record_(scene::look_at_camera(view)), rays_(record_, view.width, view.height) {}
+  const Vec3& location() const { return record_.location; }
+  const Vec3& direction() const { return record_.direction; }
+  const Vec3& right() const { return record_.right; }
+  const Vec3& up() const { return record_.up; }
+  const scene::Camera& record() const { return record_; }
+  Ray ray_through(double x0, double y0) const { return rays_.ray_through(x0, y0); }
+  Ray primary_ray(int i, int j) const { return rays_.primary_ray(i, j); }
+
+ private:
+  scene::Camera record_;
+  SceneCamera rays_;
+};
 
 void expect_near(const Vec3& actual, const Vec3& expected, double tol = kTol) {
   EXPECT_NEAR(actual.x, expected.x, tol);
@@ -25,7 +53,7 @@ double degrees_between(const Vec3& a, const Vec3& b) {
          kPi;
 }
 
-TEST(Camera, CentrePixelLooksAtLookAt) {
+TEST(LookAtCamera, CentrePixelLooksAtLookAt) {
   // Odd sizes put a pixel centre exactly on the image centre.
   const Camera camera({Vec3(3, -2, 7), Vec3(-1, 4, 2), 55.0, 31, 17});
   const Ray ray = camera.primary_ray(15, 8);
@@ -33,7 +61,7 @@ TEST(Camera, CentrePixelLooksAtLookAt) {
   expect_near(ray.direction, glm::normalize(Vec3(-1, 4, 2) - Vec3(3, -2, 7)));
 }
 
-TEST(Camera, PixelCentresOfASquareImageByHand) {
+TEST(LookAtCamera, PixelCentresOfASquareImageByHand) {
   // Angle 90, 2x2: right = <1,0,0>, up = <0,1,0>, direction length 0.5 / tan(45) = 0.5.
   // Pixel (0, 0) is the top-left one: x0 = -0.25, y0 = +0.25 -> <-0.25, 0.25, 0.5>.
   const Camera camera({Vec3(0), Vec3(0, 0, 1), 90.0, 2, 2});
@@ -42,7 +70,7 @@ TEST(Camera, PixelCentresOfASquareImageByHand) {
   expect_near(camera.primary_ray(1, 1).direction, Vec3(1, -1, 2) / std::sqrt(6.0));
 }
 
-TEST(Camera, AngleIsTheHorizontalFieldOfView) {
+TEST(LookAtCamera, AngleIsTheHorizontalFieldOfView) {
   for (const double angle : {10.0, 40.0, 90.0, 150.0}) {
     const Camera camera({Vec3(1, 2, 3), Vec3(4, 1, 9), angle, 800, 600});
     EXPECT_NEAR(degrees_between(camera.ray_through(-0.5, 0).direction,
@@ -57,7 +85,7 @@ TEST(Camera, AngleIsTheHorizontalFieldOfView) {
   }
 }
 
-TEST(Camera, FrameVectorsHavePovRayLengths) {
+TEST(LookAtCamera, FrameVectorsHavePovRayLengths) {
   const Camera camera({Vec3(0, 0, -5), Vec3(0), 40.0, 160, 120});
   EXPECT_NEAR(glm::length(camera.right()), 160.0 / 120.0, kTol);
   EXPECT_NEAR(glm::length(camera.up()), 1.0, kTol);
@@ -65,7 +93,7 @@ TEST(Camera, FrameVectorsHavePovRayLengths) {
               kTol);
 }
 
-TEST(Camera, LeftHandedFrameTurnedByLookAt) {
+TEST(LookAtCamera, LeftHandedFrameTurnedByLookAt) {
   // Looking along -x in left-handed coordinates (x right, y up, z forward), the viewer's
   // right is +z: the direction it faced before turning left.
   const Camera side({Vec3(5, 0, 0), Vec3(0), 60.0, 100, 100});
@@ -80,7 +108,7 @@ TEST(Camera, LeftHandedFrameTurnedByLookAt) {
   expect_near(above.up(), Vec3(0, 1, 1) / std::sqrt(2.0));
 }
 
-TEST(Camera, RejectsDegenerateFrames) {
+TEST(LookAtCamera, RejectsDegenerateFrames) {
   EXPECT_THROW(Camera({Vec3(1), Vec3(1), 40.0, 8, 8}), std::invalid_argument);
   EXPECT_THROW(Camera({Vec3(0, 5, 0), Vec3(0), 40.0, 8, 8}),
                std::invalid_argument);  // straight down
@@ -99,10 +127,10 @@ Vec2 project(const Camera& camera, const Vec3& p) {
   return {b / a, c / a};
 }
 
-TEST(Camera, AutomaticFramingShowsTheWholeBoxFromTheFrontAndAbove) {
+TEST(LookAtCamera, AutomaticFramingShowsTheWholeBoxFromTheFrontAndAbove) {
   const Box3 box{Vec3(-3, 10, 4), Vec3(5, 12, 30)};
   for (const auto& [w, h] : {std::pair{800, 600}, std::pair{300, 900}}) {
-    const CameraSpec spec = frame_bounds(box, w, h, 40.0);
+    const LookAtView spec = frame_bounds(box, w, h, 40.0);
     const Camera camera(spec);
     expect_near(spec.look_at, Vec3(1, 11, 17));
     EXPECT_LT(spec.location.z, box.lo.z);        // from the -z side
@@ -124,14 +152,14 @@ TEST(Camera, AutomaticFramingShowsTheWholeBoxFromTheFrontAndAbove) {
   }
 }
 
-TEST(Camera, DefaultLightIsAboveLeftAndBehindTheCamera) {
+TEST(LookAtCamera, DefaultLightIsAboveLeftAndBehindTheCamera) {
   const Box3 box{Vec3(-1), Vec3(1)};
   const Camera camera(frame_bounds(box, 800, 600, 40.0));
-  const Vec3 offset = default_light_position(camera, box) - camera.location();
+  const Vec3 offset = default_light_position(camera.record(), box) - camera.location();
   EXPECT_GT(glm::dot(offset, camera.up()), 0.0);
   EXPECT_LT(glm::dot(offset, camera.right()), 0.0);
   EXPECT_LT(glm::dot(offset, camera.direction()), 0.0);
-  EXPECT_GT(glm::length(default_light_position(camera, box)), 2.0 * std::sqrt(3.0));
+  EXPECT_GT(glm::length(default_light_position(camera.record(), box)), 2.0 * std::sqrt(3.0));
 }
 
 }  // namespace

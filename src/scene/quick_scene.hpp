@@ -1,0 +1,30 @@
+#pragma once
+// The scene `convray quick` renders: one convolution object in a warm clay finish, one point
+// light with shadows, a dark background, and a perspective camera that either frames the
+// object's bounds or looks where the options say. Quick pictures go through the same
+// renderer as scene files (render/render_scene.hpp); this file only chooses the records.
+#include "implicit/convolution_object.hpp"
+#include "scene/look_at_camera.hpp"
+#include "scene/scene.hpp"
+#include "util/math.hpp"
+
+namespace convray::scene {
+
+// A view that shows all of `bounds` (assumed non-empty): it looks at the box's centre from
+// the -z side and somewhat above (about 20 degrees), far enough that the box's bounding sphere
+// fits in both the horizontal and the vertical field of view with a 5% margin.
+LookAtView frame_bounds(const Box3& bounds, int width, int height, double angle_degrees);
+
+// A light above, to the left of and behind the camera, a few bounding radii away from the
+// box's centre, so that shadows fall visibly down and to the right of the object.
+Vec3 default_light_position(const Camera& camera, const Box3& bounds);
+
+// The finish of quick's pictures: ambient 0.08, diffuse 0.85, phong 0.3 with phong_size 40.
+TexturePtr quick_texture();
+
+// The whole scene: `object` (in world space) seen by `camera`, lit by a white point light at
+// `light`, shadows on, assumed_gamma 1.
+Scene quick_scene(implicit::ConvolutionObject object, const Camera& camera,
+                         const Vec3& light);
+
+}  // namespace convray::scene
