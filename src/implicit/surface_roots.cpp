@@ -6,10 +6,12 @@
 
 #include "field/triangle_batch.hpp"
 #include "implicit/bezier_clip.hpp"
+#include "implicit/bracket_refine.hpp"
 #include "implicit/interval_fit.hpp"
 #include "implicit/ray_box.hpp"
 #include "implicit/sphere_sweep.hpp"
 #include "implicit/surface_impl.hpp"
+#include "implicit/window_march.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -174,34 +176,12 @@ double RayTracer::exact_minus_threshold(const ExactSum& exact, double t) {
   return sum - s_.threshold;
 }
 
-// Illinois regula falsi on a sign-changing bracket, with a bisection step whenever the
-// bracket fails to halve, until it is a few ulps wide or the field hits T exactly.
+// The exact field's root in a sign-changing bracket (bracket_refine.hpp).
 double RayTracer::polish(const ExactSum& ids, double lo, double hi, double g_lo,
                          double g_hi) {
   ++stats_.roots;
-  int side = 0;
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    const double width = hi - lo;
-    const double ulps = 8.0 * std::numeric_limits<double>::epsilon() *
-                        std::max(std::abs(lo), std::abs(hi));
-    if (width <= ulps) break;
-    double t = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-    if (iteration % 4 == 3 || !(t > lo && t < hi)) t = 0.5 * (lo + hi);
-    const double g = exact_minus_threshold(ids, t);
-    if (g == 0.0) return t;
-    if ((g < 0.0) == (g_lo < 0.0)) {
-      lo = t;
-      g_lo = g;
-      if (side == -1) g_hi *= 0.5;
-      side = -1;
-    } else {
-      hi = t;
-      g_hi = g;
-      if (side == 1) g_lo *= 0.5;
-      side = 1;
-    }
-  }
-  return std::abs(g_lo) < std::abs(g_hi) ? lo : hi;
+  return refine_bracket(lo, hi, g_lo, g_hi,
+                        [&](double t) { return exact_minus_threshold(ids, t); });
 }
 
 // A region from the band isolation may hold a crossing (the exact field changes sign across
@@ -370,8 +350,10 @@ bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepReque
     if (reach >= tmin) {
       if (only_spheres(surface, cluster)) {
         sweep_spheres(surface, request, cluster, tmin, tmax, out, stats);
-      } else {
+      } else if (surface.tracer == Tracer::fits) {
         tracer.solve_cluster(cluster, tmin, tmax, mode, out);
+      } else {
+        march_cluster(surface, ray, cluster, tmin, tmax, mode, out, stats, request.gradient);
       }
     }
     if (mode != RootMode::all && out.size() > found) return true;

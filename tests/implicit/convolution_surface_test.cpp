@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "implicit/convolution_surface.hpp"
 #include "implicit/reference_tracer.hpp"
@@ -99,13 +100,21 @@ ConvolutionObject random_skeleton(std::mt19937_64& rng) {
   return o;
 }
 
-TEST(ConvolutionSurface, AgreesWithTheReferenceTracerOnRandomSkeletons) {
+// The fast window march and the paper's fits, each against the reference tracer.
+class EveryFastTracer : public ::testing::TestWithParam<Tracer> {};
+
+INSTANTIATE_TEST_SUITE_P(Tracers, EveryFastTracer, ::testing::Values(Tracer::fast, Tracer::fits),
+                         [](const auto& info) {
+                           return std::string(info.param == Tracer::fast ? "WindowMarch" : "Fits");
+                         });
+
+TEST_P(EveryFastTracer, AgreesWithTheReferenceTracerOnRandomSkeletons) {
   std::mt19937_64 rng(33);
   int rays = 0, disagreements = 0, hits = 0;
   double worst = 0.0, worst_normal = 0.0;
   TraceStats stats;
   for (int scene = 0; scene < 12; ++scene) {
-    const ConvolutionSurface surface(random_skeleton(rng));
+    const ConvolutionSurface surface(random_skeleton(rng), nullptr, GetParam());
     const double R = 0.4;  // the smallest radius used
     for (int i = 0; i < 250; ++i) {
       const Vec3 origin = 5.0 * random_unit(rng);
@@ -135,12 +144,12 @@ TEST(ConvolutionSurface, AgreesWithTheReferenceTracerOnRandomSkeletons) {
 }
 
 // Every root of roots() is a crossing of the exact field, and F at its sides differs in sign.
-TEST(ConvolutionSurface, AllRootsArePolishedCrossings) {
+TEST_P(EveryFastTracer, AllRootsArePolishedCrossings) {
   std::mt19937_64 rng(34);
   TraceStats stats;
   int checked = 0;
   for (int scene = 0; scene < 6; ++scene) {
-    const ConvolutionSurface surface(random_skeleton(rng));
+    const ConvolutionSurface surface(random_skeleton(rng), nullptr, GetParam());
     for (int i = 0; i < 100; ++i) {
       const Vec3 origin = 5.0 * random_unit(rng);
       const Ray ray{origin, glm::normalize(random_unit(rng) - origin)};
@@ -167,7 +176,7 @@ TEST(ConvolutionSurface, AllRootsArePolishedCrossings) {
 // slab |h| <= R), so on rings much wider than R most of it lies outside the support and the
 // field is a couple of narrow bumps where the ray crosses the tube. Full rings and half rings,
 // rays close to the ring's plane through the hole and across the tube, against the reference.
-TEST(ConvolutionSurface, ArcsWideAgainstTheirRadiusAgreeWithTheReferenceTracer) {
+TEST_P(EveryFastTracer, ArcsWideAgainstTheirRadiusAgreeWithTheReferenceTracer) {
   std::mt19937_64 rng(35);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   TraceStats stats;
@@ -184,7 +193,7 @@ TEST(ConvolutionSurface, ArcsWideAgainstTheirRadiusAgreeWithTheReferenceTracer) 
       arc.angle = angle;
       o.arcs.push_back({arc, {1.0, R}});
       o.threshold = 0.3 * 16.0 / 15.0 * R;  // 0.3 of the field on a long straight skeleton
-      const ConvolutionSurface surface(o);
+      const ConvolutionSurface surface(o, nullptr, GetParam());
       const Vec3 second = glm::cross(arc.axis, arc.start);
       for (int i = 0; i < 60; ++i) {
         // From outside the ring towards a point of the ring's disc, tilted a little out of

@@ -3,6 +3,8 @@
 // most 0.05 % of the rays, hit distances within 1e-6 R.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <cmath>
 
 #include "fixtures/defective_soups.hpp"
@@ -70,15 +72,23 @@ void expect_agreement(const Comparison& c) {
   EXPECT_LE(c.worst, 1e-6);
 }
 
-TEST(MeshSurface, TorusAgreesWithTheReference) {
+// The fast window march and the paper's fits, each against the reference tracer.
+class MeshSurfaceTracer : public ::testing::TestWithParam<Tracer> {};
+
+INSTANTIATE_TEST_SUITE_P(Tracers, MeshSurfaceTracer, ::testing::Values(Tracer::fast, Tracer::fits),
+                         [](const auto& info) {
+                           return std::string(info.param == Tracer::fast ? "WindowMarch" : "Fits");
+                         });
+
+TEST_P(MeshSurfaceTracer, TorusAgreesWithTheReference) {
   ConvolutionObject object;
   const double R = 0.3;
   object.meshes.push_back(component(mesh::torus(1.0, 0.35, 24, 12), R));
   object.threshold = threshold_for_offset(1.0, R, 0.5 * R);
-  expect_agreement(compare_on_grid(ConvolutionSurface(object), R, {0.5, 2.0, -4.0}, 36));
+  expect_agreement(compare_on_grid(ConvolutionSurface(object, nullptr, GetParam()), R, {0.5, 2.0, -4.0}, 36));
 }
 
-TEST(MeshSurface, DefectiveSoupAndSheetWithHoleAgreeWithTheReference) {
+TEST_P(MeshSurfaceTracer, DefectiveSoupAndSheetWithHoleAgreeWithTheReference) {
   ConvolutionObject object;
   const double R = 0.25;
   object.meshes.push_back(component(mesh::defective_soup(), R));
@@ -87,7 +97,7 @@ TEST(MeshSurface, DefectiveSoupAndSheetWithHoleAgreeWithTheReference) {
   object.meshes.push_back(component(sheet, 0.2));
   object.segments.push_back({{{-1.5, 1.2, 0}, {1.5, 1.2, 0.3}}, {2.0, 0.4}});
   object.threshold = threshold_for_offset(1.0, R, 0.5 * R);
-  expect_agreement(compare_on_grid(ConvolutionSurface(object), 0.2, {1.0, 1.5, -4.0}, 36));
+  expect_agreement(compare_on_grid(ConvolutionSurface(object, nullptr, GetParam()), 0.2, {1.0, 1.5, -4.0}, 36));
 }
 
 }  // namespace

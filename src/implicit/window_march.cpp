@@ -1,0 +1,304 @@
+#include "implicit/window_march.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "field/triangle_batch.hpp"
+#include "implicit/bracket_refine.hpp"
+
+namespace convray::implicit {
+namespace {
+
+using Impl = ConvolutionSurface::Impl;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// |K''| <= 8 / R^2 for K(r) = (1 - r^2/R^2)^2 along any line (see the header).
+constexpr double kKernelCurvature = 8.0;
+// Distance kernels of a segment (POV-Ray's blob cylinders): K(u) with u = d^2 the squared
+// distance to a convex set, 0 <= u'' <= 2 and |u'| <= 2d, so |K''| <= |K_uu| u'^2 + |K_u| u''
+// <= (2/R^4)(4R^2) + (2/R^2) 2 = 12 / R^2.
+constexpr double kDistanceKernelCurvature = 12.0;
+// Windows are not halved below this fraction of the smallest radius (the field only touches T).
+constexpr double kResolution = 1e-3;
+// The march steps at least this fraction of the smallest radius; such a step is not certified
+// by the one-sided envelope and gets the two-sided test.
+constexpr double kMinStep = 1.0 / 32.0;
+// ... and at most this many smallest radii, the window over which the curvature is summed.
+constexpr double kMaxStep = 2.0;
+
+// F - T and its slope at t.
+struct Sample {
+  double t, g, d;
+};
+
+// The cluster's primitives made ready to be summed at any t: the triangles of each mesh in
+// one SIMD batch, evaluated for the lanes whose support holds the point; the rest one by one.
+class ClusterField {
+ public:
+  ClusterField(const Impl& s, const Ray& ray, std::span<const accel::SupportInterval> cluster,
+               TraceStats& stats);
+
+  Sample sample(double t);  // value and slope
+  double value_minus_threshold(double t);
+  Vec3 gradient(double t);
+  // Sum of the curvature bounds of the primitives whose support meets [a, b].
+  double curvature(double a, double b) const;
+  double reach() const { return reach_; }
+
+ private:
+  struct Member {
+    double enter, exit, curvature;
+    uint32_t id;
+  };
+  struct Batch {
+    const Impl::Group* group = nullptr;
+    std::vector<field::Triangle> triangles;
+    std::vector<double> enter, exit;
+    field::TriangleBatch batch;
+    std::vector<uint32_t> lanes;
+  };
+  template <bool kGradient>
+  field::FieldSample evaluate(double t);
+  Batch& batch_for(const Impl::Group& group);
+
+  const Impl& s_;
+  const Ray& ray_;
+  TraceStats& stats_;
+  size_t batches_used_ = 0;
+  double reach_ = -kInfinity;
+  // Storage kept from ray to ray (a cluster is marched by one thread at a time).
+  static thread_local std::vector<Member> members_;  // every primitive, for the curvature
+  static thread_local std::vector<Member> others_;   // those outside the batches
+  static thread_local std::vector<Batch> batches_;
+};
+
+thread_local std::vector<ClusterField::Member> ClusterField::members_;
+thread_local std::vector<ClusterField::Member> ClusterField::others_;
+thread_local std::vector<ClusterField::Batch> ClusterField::batches_;
+
+ClusterField::ClusterField(const Impl& s, const Ray& ray,
+                           std::span<const accel::SupportInterval> cluster, TraceStats& stats)
+    : s_(s), ray_(ray), stats_(stats) {
+  members_.clear();
+  others_.clear();
+  for (const accel::SupportInterval& iv : cluster) {
+    const Member m{iv.enter, iv.exit, curvature_bound(s, iv.primitive), iv.primitive};
+    members_.push_back(m);
+    reach_ = std::max(reach_, iv.exit);
+    if (iv.primitive < s.triangle_base) {
+      others_.push_back(m);
+      continue;
+    }
+    const uint32_t triangle = iv.primitive - s.triangle_base;
+    Batch& b = batch_for(s.group_of(triangle));
+    b.triangles.push_back(s.triangles[triangle]);
+    b.enter.push_back(iv.enter);
+    b.exit.push_back(iv.exit);
+  }
+  for (size_t k = 0; k < batches_used_; ++k) batches_[k].batch.assign(batches_[k].triangles);
+}
+
+ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
+  for (size_t k = 0; k < batches_used_; ++k) {
+    if (batches_[k].group == &group) return batches_[k];
+  }
+  if (batches_.size() == batches_used_) batches_.emplace_back();
+  Batch& b = batches_[batches_used_++];
+  b.group = &group;
+  b.triangles.clear();
+  b.enter.clear();
+  b.exit.clear();
+  return b;
+}
+
+template <bool kGradient>
+field::FieldSample ClusterField::evaluate(double t) {
+  const Vec3 p = ray_.at(t);
+  field::FieldSample sum;
+  for (size_t k = 0; k < batches_used_; ++k) {
+    Batch& b = batches_[k];
+    b.lanes.clear();
+    for (uint32_t lane = 0; lane < b.enter.size(); ++lane) {
+      if (b.enter[lane] <= t && t <= b.exit[lane]) b.lanes.push_back(lane);
+    }
+    if (b.lanes.empty()) continue;
+    stats_.field_evaluations += b.lanes.size();
+    const double radius = b.group->radius, strength = b.group->strength;
+    if constexpr (kGradient) {
+      sum += b.batch.field(p, radius, b.lanes) * strength;
+    } else {
+      sum.value += strength * b.batch.value(p, radius, b.lanes);
+    }
+  }
+  for (const Member& m : others_) {
+    if (!(m.enter <= t && t <= m.exit)) continue;
+    ++stats_.field_evaluations;
+    if constexpr (kGradient) {
+      sum += s_.sample(m.id, p);
+    } else {
+      sum.value += s_.value(m.id, p);
+    }
+  }
+  return sum;
+}
+
+Sample ClusterField::sample(double t) {
+  const field::FieldSample f = evaluate<true>(t);
+  return {t, f.value - s_.threshold, glm::dot(f.gradient, ray_.direction)};
+}
+
+double ClusterField::value_minus_threshold(double t) {
+  return evaluate<false>(t).value - s_.threshold;
+}
+
+Vec3 ClusterField::gradient(double t) { return evaluate<true>(t).gradient; }
+
+double ClusterField::curvature(double a, double b) const {
+  double sum = 0.0;
+  for (const Member& m : members_) {
+    if (m.enter <= b && m.exit >= a) sum += m.curvature;
+  }
+  return sum;
+}
+
+// How far from `a` the one-sided envelope keeps F on its side of T (infinite when nothing
+// curves and the slope leads away from T).
+double certified_step(const Sample& a, double curvature) {
+  const double gap = std::abs(a.g);
+  const double towards = a.g < 0.0 ? a.d : -a.d;  // slope towards T
+  const double denominator = towards + std::sqrt(towards * towards + 2.0 * curvature * gap);
+  return denominator > 0.0 ? 2.0 * gap / denominator : kInfinity;
+}
+
+// Whether the Taylor envelopes of a and b (same side of T) keep F off T on [a.t, b.t].
+bool window_excluded(const Sample& a, const Sample& b, double curvature) {
+  const double h = b.t - a.t;
+  // Below T the upper envelopes count (+M), above it the lower ones (-M); in both cases the
+  // difference of the two envelopes is linear in s, so they meet at one point at most, and
+  // the envelope nearest to T is largest there or at an end (where it is F itself).
+  const double m = a.g < 0.0 ? curvature : -curvature;
+  const double constant = a.g - b.g + b.d * h - 0.5 * m * h * h;
+  const double slope = a.d - b.d + m * h;
+  if (slope == 0.0) return true;
+  const double s = -constant / slope;
+  if (!(s > 0.0 && s < h)) return true;
+  const double envelope = a.g + a.d * s + 0.5 * m * s * s;
+  return a.g < 0.0 ? envelope < 0.0 : envelope > 0.0;
+}
+
+class Marcher {
+ public:
+  Marcher(const Impl& s, ClusterField& field, RootMode mode, std::vector<double>& out,
+          TraceStats& stats)
+      : s_(s), field_(field), mode_(mode), out_(out), stats_(stats) {}
+
+  // Whether the search is over (a root found where one is enough).
+  bool march(double from, double to);
+  double last_root() const { return last_root_; }
+
+ private:
+  bool bracket(const Sample& a, const Sample& b);
+  bool search_window(const Sample& a, const Sample& b);
+
+  const Impl& s_;
+  ClusterField& field_;
+  RootMode mode_;
+  std::vector<double>& out_;
+  TraceStats& stats_;
+  double last_root_ = kInfinity;
+};
+
+// A sign change between a and b: its root, refined on the exact field (for RootMode::any a
+// point of the bracket is enough).
+bool Marcher::bracket(const Sample& a, const Sample& b) {
+  double t = b.t;
+  if (mode_ != RootMode::any) {
+    ++stats_.roots;
+    t = refine_bracket(a.t, b.t, a.g, b.g,
+                       [&](double x) { return field_.value_minus_threshold(x); });
+  }
+  if (out_.empty() || t > out_.back() + 1e-9 * s_.min_radius) out_.push_back(t);
+  last_root_ = t;
+  return mode_ != RootMode::all;
+}
+
+// a and b on the same side of T: halve until the envelopes exclude a crossing pair, or the
+// window is narrower than the resolution.
+bool Marcher::search_window(const Sample& a, const Sample& b) {
+  if (window_excluded(a, b, field_.curvature(a.t, b.t))) return false;
+  if (b.t - a.t < kResolution * s_.min_radius) return false;
+  ++stats_.subdivisions;
+  const Sample mid = field_.sample(0.5 * (a.t + b.t));
+  if ((mid.g < 0.0) != (a.g < 0.0)) {
+    if (bracket(a, mid)) return true;
+    return bracket(mid, b);
+  }
+  if (search_window(a, mid)) return true;
+  return search_window(mid, b);
+}
+
+bool Marcher::march(double from, double to) {
+  const double min_step = kMinStep * s_.min_radius, max_step = kMaxStep * s_.min_radius;
+  Sample a = field_.sample(from);
+  if (a.g == 0.0 && bracket(a, a)) return true;
+  while (a.t < to) {
+    ++stats_.fits;
+    const double curvature = field_.curvature(a.t, std::min(to, a.t + max_step));
+    double step = certified_step(a, curvature);
+    const bool certified = step >= min_step;
+    step = std::clamp(step, min_step, max_step);
+    const Sample b = field_.sample(std::min(to, a.t + step));
+    if ((a.g < 0.0) != (b.g < 0.0)) {
+      if (bracket(a, b)) return true;
+    } else if (!certified && search_window(a, b)) {
+      return true;
+    }
+    a = b;
+  }
+  return false;
+}
+
+}  // namespace
+
+double curvature_bound(const Impl& s, uint32_t id) {
+  if (id < s.capsule_base) {
+    const double r = s.sphere_radii[id];
+    return std::abs(s.sphere_strengths[id]) * kKernelCurvature / (r * r);
+  }
+  if (id < s.arc_base) {
+    const uint32_t i = id - s.capsule_base;
+    const double r = s.capsule_radii[i];
+    if (s.capsule_is_blob[i]) return std::abs(s.capsule_strengths[i]) * kDistanceKernelCurvature / (r * r);
+    const double length = std::min(glm::length(s.capsules[i].b - s.capsules[i].a), 2.0 * r);
+    return std::abs(s.capsule_strengths[i]) * kKernelCurvature * length / (r * r);
+  }
+  if (id < s.triangle_base) {
+    const uint32_t i = id - s.arc_base;
+    const double r = s.arc_radii[i];
+    const double length = std::min(s.arcs[i].angle * s.arcs[i].radius, 2.0 * kPi * r);
+    return std::abs(s.arc_strengths[i]) * kKernelCurvature * length / (r * r);
+  }
+  const uint32_t triangle = id - s.triangle_base;
+  const Impl::Group& g = s.group_of(triangle);
+  const field::Triangle& tri = s.triangles[triangle];
+  const double area = 0.5 * glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a));
+  const double r = g.radius;
+  return std::abs(g.strength) * kKernelCurvature * std::min(area, kPi * r * r) / (r * r);
+}
+
+void march_cluster(const Impl& surface, const Ray& ray,
+                   std::span<const accel::SupportInterval> cluster, double tmin, double tmax,
+                   RootMode mode, std::vector<double>& out, TraceStats& stats,
+                   std::optional<Vec3>* first_gradient) {
+  ClusterField field(surface, ray, cluster, stats);
+  const double from = std::max(tmin, cluster.front().enter);
+  const double to = std::min(tmax, field.reach());
+  if (!(from < to)) return;
+  Marcher marcher(surface, field, mode, out, stats);
+  if (marcher.march(from, to) && mode == RootMode::first && first_gradient) {
+    *first_gradient = field.gradient(marcher.last_root());
+  }
+}
+
+}  // namespace convray::implicit
