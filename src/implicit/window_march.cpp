@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 #include "field/triangle_batch.hpp"
+#include "field/triangle_quartic.hpp"
 #include "implicit/bracket_refine.hpp"
 
 namespace convray::implicit {
@@ -32,8 +34,14 @@ struct Sample {
   double t, g, d;
 };
 
+// What an evaluation of the cluster's field returns: the value, its slope along the ray, and
+// (only when asked) the full gradient.
+enum class Want { value, slope, gradient };
+
 // The cluster's primitives made ready to be summed at any t: the triangles of each mesh in
 // one SIMD batch, evaluated for the lanes whose support holds the point; the rest one by one.
+// A triangle that lies wholly inside the kernel's ball at p(t) (all three corners within R)
+// adds its exact quartic in t instead (field/triangle_quartic.hpp): at large R most of them.
 class ClusterField {
  public:
   ClusterField(const Impl& s, const Ray& ray, std::span<const accel::SupportInterval> cluster,
@@ -54,19 +62,23 @@ class ClusterField {
   struct Batch {
     const Impl::Group* group = nullptr;
     std::vector<field::Triangle> triangles;
-    std::vector<double> enter, exit;
+    std::vector<double> enter, exit;                // the support along the ray
+    std::vector<double> inside_enter, inside_exit;  // the whole triangle inside the ball
+    std::vector<field::LineQuartic> quartics;       // in s = t - origin_t_
     field::TriangleBatch batch;
     std::vector<uint32_t> lanes;
   };
-  template <bool kGradient>
-  field::FieldSample evaluate(double t);
+  template <Want kWant>
+  field::FieldSample evaluate(double t, double* slope);
   Batch& batch_for(const Impl::Group& group);
+  void add_triangle(Batch& b, const field::Triangle& triangle, double enter, double exit);
 
   const Impl& s_;
   const Ray& ray_;
   TraceStats& stats_;
   size_t batches_used_ = 0;
   double reach_ = -kInfinity;
+  double origin_t_ = 0.0;  // where the quartics' parameter s is 0 (near the cluster)
   // Storage kept from ray to ray (a cluster is marched by one thread at a time).
   static thread_local std::vector<Member> members_;  // every primitive, for the curvature
   static thread_local std::vector<Member> others_;   // those outside the batches
@@ -79,7 +91,7 @@ thread_local std::vector<ClusterField::Batch> ClusterField::batches_;
 
 ClusterField::ClusterField(const Impl& s, const Ray& ray,
                            std::span<const accel::SupportInterval> cluster, TraceStats& stats)
-    : s_(s), ray_(ray), stats_(stats) {
+    : s_(s), ray_(ray), stats_(stats), origin_t_(cluster.front().enter) {
   members_.clear();
   others_.clear();
   for (const accel::SupportInterval& iv : cluster) {
@@ -91,10 +103,7 @@ ClusterField::ClusterField(const Impl& s, const Ray& ray,
       continue;
     }
     const uint32_t triangle = iv.primitive - s.triangle_base;
-    Batch& b = batch_for(s.group_of(triangle));
-    b.triangles.push_back(s.triangles[triangle]);
-    b.enter.push_back(iv.enter);
-    b.exit.push_back(iv.exit);
+    add_triangle(batch_for(s.group_of(triangle)), s.triangles[triangle], iv.enter, iv.exit);
   }
   for (size_t k = 0; k < batches_used_; ++k) batches_[k].batch.assign(batches_[k].triangles);
 }
@@ -109,50 +118,97 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   b.triangles.clear();
   b.enter.clear();
   b.exit.clear();
+  b.inside_enter.clear();
+  b.inside_exit.clear();
+  b.quartics.clear();
   return b;
 }
 
-template <bool kGradient>
-field::FieldSample ClusterField::evaluate(double t) {
+void ClusterField::add_triangle(Batch& b, const field::Triangle& triangle, double enter,
+                                double exit) {
+  b.triangles.push_back(triangle);
+  b.enter.push_back(enter);
+  b.exit.push_back(exit);
+  // Where all three corners are within R of p(t): the intersection of their balls' chords.
+  const double radius = b.group->radius;
+  double lo = -kInfinity, hi = kInfinity;
+  for (const Vec3& corner : {triangle.a, triangle.b, triangle.c}) {
+    const Vec3 w = corner - ray_.origin;
+    const double along = glm::dot(w, ray_.direction);
+    const double across2 = glm::dot(w, w) - along * along;
+    const double half2 = radius * radius - across2;
+    if (!(half2 > 0.0)) {
+      lo = kInfinity;
+      break;
+    }
+    const double half = std::sqrt(half2);
+    lo = std::max(lo, along - half);
+    hi = std::min(hi, along + half);
+  }
+  // Shrunk by a hair, so rounding never takes a corner just outside for inside.
+  const double margin = 1e-9 * radius;
+  lo += margin;
+  hi -= margin;
+  b.inside_enter.push_back(lo);
+  b.inside_exit.push_back(hi);
+  b.quartics.push_back(lo < hi ? field::triangle_line_quartic(triangle, ray_.at(origin_t_),
+                                                               ray_.direction, radius)
+                               : field::LineQuartic{});
+}
+
+template <Want kWant>
+field::FieldSample ClusterField::evaluate(double t, double* slope) {
   const Vec3 p = ray_.at(t);
   field::FieldSample sum;
+  double along = 0.0;  // slope of the quartic parts
+  const double s = t - origin_t_;
   for (size_t k = 0; k < batches_used_; ++k) {
     Batch& b = batches_[k];
     b.lanes.clear();
+    field::LineQuartic inside;
     for (uint32_t lane = 0; lane < b.enter.size(); ++lane) {
-      if (b.enter[lane] <= t && t <= b.exit[lane]) b.lanes.push_back(lane);
+      if (!(b.enter[lane] <= t && t <= b.exit[lane])) continue;
+      if (kWant != Want::gradient && b.inside_enter[lane] <= t && t <= b.inside_exit[lane]) {
+        inside.add(b.quartics[lane], 1.0);
+      } else {
+        b.lanes.push_back(lane);
+      }
     }
+    const double radius = b.group->radius, strength = b.group->strength;
+    sum.value += strength * inside.value(s);
+    if (kWant == Want::slope) along += strength * inside.slope(s);
     if (b.lanes.empty()) continue;
     stats_.field_evaluations += b.lanes.size();
-    const double radius = b.group->radius, strength = b.group->strength;
-    if constexpr (kGradient) {
-      sum += b.batch.field(p, radius, b.lanes) * strength;
-    } else {
+    if constexpr (kWant == Want::value) {
       sum.value += strength * b.batch.value(p, radius, b.lanes);
+    } else {
+      sum += b.batch.field(p, radius, b.lanes) * strength;
     }
   }
   for (const Member& m : others_) {
     if (!(m.enter <= t && t <= m.exit)) continue;
     ++stats_.field_evaluations;
-    if constexpr (kGradient) {
-      sum += s_.sample(m.id, p);
-    } else {
+    if constexpr (kWant == Want::value) {
       sum.value += s_.value(m.id, p);
+    } else {
+      sum += s_.sample(m.id, p);
     }
   }
+  if (slope) *slope = along + glm::dot(sum.gradient, ray_.direction);
   return sum;
 }
 
 Sample ClusterField::sample(double t) {
-  const field::FieldSample f = evaluate<true>(t);
-  return {t, f.value - s_.threshold, glm::dot(f.gradient, ray_.direction)};
+  double slope = 0.0;
+  const field::FieldSample f = evaluate<Want::slope>(t, &slope);
+  return {t, f.value - s_.threshold, slope};
 }
 
 double ClusterField::value_minus_threshold(double t) {
-  return evaluate<false>(t).value - s_.threshold;
+  return evaluate<Want::value>(t, nullptr).value - s_.threshold;
 }
 
-Vec3 ClusterField::gradient(double t) { return evaluate<true>(t).gradient; }
+Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t, nullptr).gradient; }
 
 double ClusterField::curvature(double a, double b) const {
   double sum = 0.0;
