@@ -25,11 +25,12 @@ constexpr double kDistanceKernelCurvature = 12.0;
 constexpr double kResolution = 1e-3;
 // The march steps at least this fraction of the smallest radius; such a step is not certified
 // by the one-sided envelope and gets the two-sided test.
-constexpr double kMinStep = 1.0 / 32.0;
+constexpr double kMinStep = 1.0 / 8.0;
 // ... and at most this many smallest radii, the window over which the curvature is summed.
 constexpr double kMaxStep = 2.0;
 
-// F - T and its slope at t.
+// F / T - 1 and its slope at t: in units of T, so that strengths from 1e-250 to 1e250 (and T
+// with them) give the same steps and the envelopes' products neither overflow nor underflow.
 struct Sample {
   double t, g, d;
 };
@@ -47,10 +48,10 @@ class ClusterField {
   ClusterField(const Impl& s, const Ray& ray, std::span<const accel::SupportInterval> cluster,
                TraceStats& stats);
 
-  Sample sample(double t);  // value and slope
-  double value_minus_threshold(double t);
+  Sample sample(double t);  // value and slope, in units of T
+  double value_minus_threshold(double t);  // F / T - 1
   Vec3 gradient(double t);
-  // Sum of the curvature bounds of the primitives whose support meets [a, b].
+  // Sum of the curvature bounds of the primitives whose support meets [a, b], in units of T.
   double curvature(double a, double b) const;
   double reach() const { return reach_; }
 
@@ -201,11 +202,11 @@ field::FieldSample ClusterField::evaluate(double t, double* slope) {
 Sample ClusterField::sample(double t) {
   double slope = 0.0;
   const field::FieldSample f = evaluate<Want::slope>(t, &slope);
-  return {t, f.value - s_.threshold, slope};
+  return {t, f.value / s_.threshold - 1.0, slope / s_.threshold};
 }
 
 double ClusterField::value_minus_threshold(double t) {
-  return evaluate<Want::value>(t, nullptr).value - s_.threshold;
+  return evaluate<Want::value>(t, nullptr).value / s_.threshold - 1.0;
 }
 
 Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t, nullptr).gradient; }
@@ -215,7 +216,7 @@ double ClusterField::curvature(double a, double b) const {
   for (const Member& m : members_) {
     if (m.enter <= b && m.exit >= a) sum += m.curvature;
   }
-  return sum;
+  return sum / s_.threshold;
 }
 
 // How far from `a` the one-sided envelope keeps F on its side of T (infinite when nothing
