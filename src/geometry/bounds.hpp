@@ -1,7 +1,6 @@
 #pragma once
 // Boxes that may be empty or reach to infinity (planes, inverted solids), and the slab test
-// that narrows a ray's interval to a box. Box3::empty() looks at x only; these look at every
-// axis, because intersecting boxes can empty any of them.
+// that narrows a ray's interval to a box.
 #include <limits>
 
 #include "implicit/ray.hpp"
@@ -15,9 +14,7 @@ inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 inline Box3 infinite_box() { return Box3{Vec3(-kInfinity), Vec3(kInfinity)}; }
 
-inline bool is_empty(const Box3& box) {
-  return box.lo.x > box.hi.x || box.lo.y > box.hi.y || box.lo.z > box.hi.z;
-}
+inline bool is_empty(const Box3& box) { return box.empty(); }
 
 // Non-empty and bounded on every side.
 inline bool is_finite(const Box3& box) {

@@ -22,7 +22,8 @@ struct Box3 {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  bool empty() const { return lo.x > hi.x; }
+  // Empty when any axis is: intersections of boxes can empty any of them.
+  bool empty() const { return lo.x > hi.x || lo.y > hi.y || lo.z > hi.z; }
   Vec3 extent() const { return empty() ? Vec3(0.0) : hi - lo; }
 };
 
