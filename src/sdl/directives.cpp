@@ -1,6 +1,7 @@
 // Directives other than control flow: #declare #local #undef #include #version #debug
 // #warning #error #default (and #macro, in macros.cpp). They run inside settle(), so item
 // parsers never see them.
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -118,7 +119,21 @@ Value Parser::Impl::parse_rvalue() {
   const LexToken& t = settle();
   if (t.word == Word::array) return parse_array_declaration();
   Value item;
-  if (parse_item(owner, item)) return item;
+  bool is_item = false;
+  const std::optional<UnsupportedItem> unsupported =
+      owner.parse_or_skip_unsupported([&] { is_item = parse_item(owner, item); });
+  if (unsupported) {
+    // Once per feature: include files declare dozens of such items.
+    const std::string text =
+        unsupported->feature + ": items declared with it are accepted, using one is an error";
+    const bool told = std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) {
+      return w.find(text) != std::string::npos;
+    });
+    if (!told) warn(unsupported->feature_at, text);
+    item.data = std::make_shared<const UnsupportedItem>(*unsupported);
+    return item;
+  }
+  if (is_item) return item;
   return parse_expression();
 }
 

@@ -187,7 +187,9 @@ void parse_statement(Parser& parser, scene::Scene& scene) {
   } else if (at_word(parser, "texture")) {
     // Only a further layer of a texture declared just before can be here.
     const SourceLoc loc = parser.peek().loc;
-    parse_texture(parser, parser.defaults().texture);
+    // The layer is dropped in any case, so one that needs what convray cannot render yet
+    // is read past as well.
+    parser.parse_or_skip_unsupported([&] { parse_texture(parser, parser.defaults().texture); });
     items::warn_once(parser, loc,
                      "a texture at the top level is read as a further layer of the texture "
                      "declared before it: layered textures are not supported, and the "

@@ -86,7 +86,7 @@ void parse_camera_item(Parser& parser, Block& block, CameraItems& items) {
     return;
   }
   if (at_any_word(parser, kUnsupportedProjections)) {
-    parser.fail_here("the " + parser.peek().text +
+    parser.fail_unsupported_here("the " + parser.peek().text +
                      " camera is not supported yet: convray "
                      "has the perspective and orthographic cameras");
   }

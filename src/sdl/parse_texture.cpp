@@ -23,7 +23,7 @@ scene::Texture parse_texture(Parser& parser, const scene::Texture& start) {
       move_texture(texture, *transform);
     } else if (at_any_word(parser, pattern_words()) ||
                at_any_word(parser, unsupported_pattern_words())) {
-      parser.fail_here("texture patterns and maps ('" + parser.peek().text +
+      parser.fail_unsupported_here("texture patterns and maps ('" + parser.peek().text +
                        "' in a texture) are not supported yet by convray");
     } else {
       block.unexpected(kWords);

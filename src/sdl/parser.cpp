@@ -314,6 +314,7 @@ const Value* Parser::peek_declared() {
   if (value != nullptr && !impl_->deprecations.empty()) {
     impl_->check_deprecated(t.view(), impl_->ref());
   }
+  if (value != nullptr) impl_->check_usable(*value, t.view(), impl_->ref());
   return value;
 }
 

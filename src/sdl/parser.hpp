@@ -6,8 +6,10 @@
 //
 // Errors are InputError at `file:line:col` of the offending token. The parser knows nothing
 // of rendering: it produces a scene::Scene of plain records.
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -85,6 +87,20 @@ class Parser {
   [[noreturn]] void fail_here(const std::string& message);  // at peek()
   void warn(const SourceLoc& loc, const std::string& message);
   const std::vector<std::string>& warnings() const;
+  // For what convray knows and cannot render yet: an UnsupportedError, which a declaration
+  // may defer (parse_or_skip_unsupported).
+  [[noreturn]] void fail_unsupported(const SourceLoc& loc, const std::string& message) const;
+  [[noreturn]] void fail_unsupported_here(const std::string& message);
+
+  // --- Declarations that need what convray cannot render yet.
+  // items::Block reports each `{` it opens and each `}` that closes one.
+  void block_opened();
+  void block_closed();
+  // Runs `parse`. When it fails with an UnsupportedError inside braces that it opened
+  // itself, the rest of those braces is read past and the error is returned instead: the
+  // item declared with it stands until it is used (peek_declared and expressions then fail
+  // with the error). Other failures, and unsupported ones outside braces, propagate.
+  std::optional<UnsupportedItem> parse_or_skip_unsupported(const std::function<void()>& parse);
 
   // Global identifiers after parsing (for `convray field scene.pov --object NAME`).
   const std::map<std::string, Value>& globals() const;

@@ -153,6 +153,7 @@ struct Parser::Impl {
   bool assumed_gamma_given = false;  // global_settings { assumed_gamma ... } was read
 
   int nesting_depth = 0;
+  int open_blocks = 0;  // braces items::Block opened and has not closed (deferred_unsupported)
   int macro_depth = 0, include_depth = 0, function_depth = 0;
   int quiet_math = 0;   // > 0: math errors in a branch whose value is discarded
   int angle_depth = 0;  // > 0: directly inside < >, where '>' ends the vector
@@ -214,6 +215,12 @@ struct Parser::Impl {
   [[noreturn]] void fail(const SourceLoc& at, const std::string& message) const;
   [[noreturn]] void fail(TokenRef at, const std::string& message) const { fail(loc(at), message); }
   [[noreturn]] void fail_here(const std::string& message) { fail(ref(), message); }
+  // An UnsupportedError; `feature` (default: the message) is what a deferring declaration
+  // keeps.
+  [[noreturn]] void fail_unsupported(const SourceLoc& at, const std::string& message,
+                                     const std::string& feature = "") const;
+  // Fails at `at` if `value` (the identifier `name`'s) is an UnsupportedItem.
+  void check_usable(const Value& value, std::string_view name, TokenRef at) const;
   void warn(const SourceLoc& at, const std::string& message);
   const SourceFile& load_file(const std::string& path, const SourceLoc& requested_at);
   std::string resolve(const std::string& name, const SourceLoc& at, bool must_exist) const;

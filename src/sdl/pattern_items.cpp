@@ -52,7 +52,7 @@ Keywords unsupported_pattern_words() { return kUnsupportedPatterns; }
 
 std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::PatternSpace& space) {
   if (at_any_word(parser, kUnsupportedPatterns)) {
-    parser.fail_here("'" + parser.peek().text + "' is not supported yet by convray");
+    parser.fail_unsupported_here("'" + parser.peek().text + "' is not supported yet by convray");
   }
   for (const PatternKeyword& keyword : kPatterns) {
     if (!at_word(parser, keyword.word)) continue;
