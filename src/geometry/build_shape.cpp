@@ -15,6 +15,7 @@
 #include "geometry/plane.hpp"
 #include "geometry/polynomial_surface.hpp"
 #include "geometry/sphere.hpp"
+#include "geometry/text_shape.hpp"
 #include "geometry/torus.hpp"
 #include "geometry/transformed.hpp"
 #include "geometry/triangle_mesh.hpp"
@@ -57,6 +58,7 @@ class ShapeBuilder {
   ShapePtr make(const scene::Cone& c, const Inherited& own) const;
   ShapePtr make(const scene::Torus& t, const Inherited& own) const;
   ShapePtr make(const scene::Polynomial& p, const Inherited& own) const;
+  ShapePtr make(const scene::Text& t, const Inherited& own) const;
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
   ShapePtr make(const scene::TriangleMesh& m, const Inherited& own) const;
   ShapePtr make(const scene::Implicit& i, const Inherited& own) const;
@@ -122,6 +124,17 @@ ShapePtr ShapeBuilder::make(const scene::Polynomial& p, const Inherited& own) co
   require(p.order >= 1 && p.order <= kMaxPolynomialDegree, "poly: the order must be 1 to 8");
   for (double c : p.coefficients) require(std::isfinite(c), "poly: coefficients must be finite");
   return std::make_unique<PolynomialSurface>(p.order, p.coefficients, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Text& t, const Inherited& own) const {
+  require(std::isfinite(t.thickness), "text: the thickness must be finite");
+  for (const auto& glyph : t.glyphs) {
+    for (const scene::OutlinePiece& piece : glyph) {
+      require(std::isfinite(piece.a.x + piece.a.y + piece.b.x + piece.b.y + piece.c.x + piece.c.y),
+              "text: the glyphs' outlines must be finite (is the offset?)");
+    }
+  }
+  return std::make_unique<TextShape>(t, surface_for(own));
 }
 
 ShapePtr ShapeBuilder::make(const scene::Disc& d, const Inherited& own) const {

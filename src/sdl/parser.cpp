@@ -325,6 +325,15 @@ std::string Parser::resolve_file(const std::string& name, const SourceLoc& loc) 
   return impl_->resolve(name, loc, true);
 }
 
+std::string Parser::resolve_file(const std::string& name, const SourceLoc& loc,
+                                 const std::string& file_type) const {
+  if (std::string found = impl_->resolve(name, loc, false); !found.empty()) return found;
+  if (std::string typed = impl_->resolve(name + file_type, loc, false); !typed.empty()) {
+    return typed;
+  }
+  return impl_->resolve(name, loc, true);  // fails, saying where it looked
+}
+
 void Parser::fail(const SourceLoc& loc, const std::string& message) const {
   impl_->fail(loc, message);
 }

@@ -81,6 +81,10 @@ class Parser {
   // A file named in the scene (mesh, include), resolved as POV-Ray resolves includes: the
   // scene's folder, the +L paths, the installed include folder. Fails at `loc` if not found.
   std::string resolve_file(const std::string& name, const SourceLoc& loc) const;
+  // The same, trying NAME + `file_type` when NAME itself is not found, as POV-Ray appends a
+  // file's type (`text { ttf "cyrvetic" ... }` reads cyrvetic.ttf).
+  std::string resolve_file(const std::string& name, const SourceLoc& loc,
+                           const std::string& file_type) const;
 
   // Errors and warnings, with the source line and a caret when the location has one.
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;

@@ -183,8 +183,9 @@ TEST(ItemsObject, DeclaredMaterialKeepsItsTexture) {
 TEST(ItemsObject, UnsupportedObjectsFailButMayBeDeclared) {
   EXPECT_TRUE(fails_with("union { sphere { 0, 1 } lathe { } }", 1, 25,
                          "'lathe' objects are not supported yet"));
-  EXPECT_TRUE(fails_with("text { ttf \"a.ttf\" \"A\" 1, 0 }", 1, 1,
-                         "'text' objects are not supported yet"));
+  // text objects are drawn now: a missing font is the error, at its name.
+  EXPECT_TRUE(fails_with("text { ttf \"no-such-font.ttf\" \"A\" 1, 0 }", 1, 12,
+                         "file not found: 'no-such-font.ttf'"));
   // Include files declare such objects that most scenes never use: declaring one warns.
   const auto result = parse("#declare L = lathe { 2, <0, 0>, <1, 1> }");
   EXPECT_TRUE(has_warning(result, "'lathe' objects are not supported yet"));
