@@ -79,6 +79,18 @@ const std::vector<ColorMapEntry>& default_color_map(Pattern pattern) {
   }
 }
 
+const scene::Texture& texture_at(const scene::Texture& texture, const Vec3& world_point) {
+  static const scene::Texture kDefault = scene::default_texture();
+  const scene::Texture* at = &texture;
+  while (at->blocks) {
+    const scene::TextureBlocks& blocks = *at->blocks;
+    const size_t block = size_t(int(pattern_value(blocks.space, world_point)));
+    if (block >= blocks.textures.size() || !blocks.textures[block]) return kDefault;
+    at = blocks.textures[block].get();
+  }
+  return *at;
+}
+
 Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& world_point) {
   switch (pigment.space.pattern) {
     case Pattern::solid:

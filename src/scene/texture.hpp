@@ -99,13 +99,34 @@ struct Interior {
   double ior = 1.0;
 };
 
+struct Texture;
+using TexturePtr = std::shared_ptr<const Texture>;
+
+// POV-Ray's block texture patterns (`texture { checker texture { A } texture { B } }`): at
+// each point the pattern's block number picks one whole texture, never a blend of two.
+struct TextureBlocks {
+  PatternSpace space;                // checker
+  std::vector<TexturePtr> textures;  // by block number
+};
+
 struct Texture {
   Pigment pigment;
   Finish finish;
   Normal normal;
+  // Set: the texture is made of these blocks, and its own pigment, finish and normal are
+  // not used.
+  std::shared_ptr<const TextureBlocks> blocks;
+  // Layered textures (`texture { A } texture { B }`: the later one lies on top): the layer
+  // under this one, seen where this one's pigment lets light through; null for the last.
+  TexturePtr below;
 };
 
-using TexturePtr = std::shared_ptr<const Texture>;
+// `upper` laid over `lower`: under upper's lowest layer.
+inline Texture layered_on(const Texture& lower, Texture upper) {
+  upper.below = upper.below ? std::make_shared<const Texture>(layered_on(lower, *upper.below))
+                            : std::make_shared<const Texture>(lower);
+  return upper;
+}
 
 // POV-Ray's default texture: black pigment, the default finish, no normal.
 inline Texture default_texture() { return Texture{}; }

@@ -201,6 +201,37 @@ void Parser::Impl::directive_declare(bool local, TokenRef) {
   if (!functions.empty()) functions.erase(name);
   if (deprecation) deprecations[name] = std::move(*deprecation);
   accept_optional_semicolon();
+  if (const Value* stored = lookup(name);
+      stored && (stored->get<std::shared_ptr<const scene::Texture>>() ||
+                 stored->get<std::shared_ptr<const UnsupportedItem>>())) {
+    last_texture_name = name;
+    last_texture_end = tokens_read;
+  }
+}
+
+Value* Parser::Impl::texture_declared_just_before() {
+  if (last_texture_end != tokens_read) return nullptr;
+  return lookup(last_texture_name);
+}
+
+bool Parser::texture_declared_just_before() {
+  return impl_->texture_declared_just_before() != nullptr;
+}
+
+void Parser::add_declared_texture_layer(const std::optional<scene::Texture>& layer,
+                                        const std::optional<UnsupportedItem>& unsupported) {
+  // Called after the layer was read: the declaration is the one texture_declared_just_before
+  // found, and the next layer may follow this one.
+  Value* declared = impl_->lookup(impl_->last_texture_name);
+  impl_->last_texture_end = impl_->tokens_read;
+  if (declared == nullptr) return;
+  const auto* texture = declared->get<std::shared_ptr<const scene::Texture>>();
+  if (texture == nullptr || !*texture) return;  // unusable already
+  if (unsupported) {
+    declared->data = std::make_shared<const UnsupportedItem>(*unsupported);
+  } else if (layer) {
+    declared->data = std::make_shared<const scene::Texture>(scene::layered_on(**texture, *layer));
+  }
 }
 
 void Parser::Impl::directive_undef() {

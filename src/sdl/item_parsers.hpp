@@ -69,13 +69,6 @@ ColorMap parse_color_map(Parser& parser);  // color_map or colour_map
 // Equal values in a row make a step.
 ColorMap ascending_equivalent(const ColorMap& map);
 
-// POV-Ray layers textures written one after another (`texture { A } texture { B }`: B drawn
-// over A, A seen through B's transparent parts). convray draws one layer: the later one,
-// unless it has transparent parts and the earlier one has none (then it is an overlay, and
-// its base is the better likeness).
-const scene::Texture& choose_texture_layer(const scene::Texture& earlier,
-                                           const scene::Texture& later);
-extern const char* const kLayeredTexturesWarning;
 
 // material { [M_ID] texture {...} interior {...} [transforms] }: the transforms move the
 // texture. A declared material is held as its texture (Value has no material yet), so

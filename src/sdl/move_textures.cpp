@@ -10,6 +10,14 @@ namespace convray::sdl::items {
 void move_texture(scene::Texture& texture, const scene::Transform& transform) {
   texture.pigment.space.transform = texture.pigment.space.transform.then(transform);
   texture.normal.space.transform = texture.normal.space.transform.then(transform);
+  if (texture.blocks) {
+    // The blocks and the textures in them move together.
+    auto blocks = std::make_shared<scene::TextureBlocks>(*texture.blocks);
+    blocks->space.transform = blocks->space.transform.then(transform);
+    for (scene::TexturePtr& block : blocks->textures) block = moved_texture(block, transform);
+    texture.blocks = std::move(blocks);
+  }
+  if (texture.below) texture.below = moved_texture(texture.below, transform);
 }
 
 scene::TexturePtr moved_texture(const scene::TexturePtr& texture,

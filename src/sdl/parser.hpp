@@ -96,6 +96,15 @@ class Parser {
   [[noreturn]] void fail_unsupported(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] void fail_unsupported_here(const std::string& message);
 
+  // `#declare T = texture { A } texture { B }`: the parser stores T after its first texture
+  // (looking further would run a following directive too early), so the texture statements
+  // read right after the declaration are its further layers: whether one is next, and then
+  // the layer read, laid over T (or, when the layer needs what convray cannot render yet,
+  // T becomes unusable with it).
+  bool texture_declared_just_before();
+  void add_declared_texture_layer(const std::optional<scene::Texture>& layer,
+                                  const std::optional<UnsupportedItem>& unsupported);
+
   // --- Declarations that need what convray cannot render yet.
   // items::Block reports each `{` it opens and each `}` that closes one.
   void block_opened();

@@ -153,7 +153,13 @@ struct Parser::Impl {
   bool assumed_gamma_given = false;  // global_settings { assumed_gamma ... } was read
 
   int nesting_depth = 0;
-  int open_blocks = 0;  // braces items::Block opened and has not closed (deferred_unsupported)
+  int open_blocks = 0;
+  // The texture the last #declare stored and the token count right after it: a texture
+  // statement read just there is its next layer (layer_onto_declared_texture).
+  std::string last_texture_name;
+  long long last_texture_end = -1;
+  // That texture's (or unusable item's) value, if no token was read since it was declared.
+  Value* texture_declared_just_before();  // braces items::Block opened and has not closed (deferred_unsupported)
   int macro_depth = 0, include_depth = 0, function_depth = 0;
   int quiet_math = 0;   // > 0: math errors in a branch whose value is discarded
   int angle_depth = 0;  // > 0: directly inside < >, where '>' ends the vector

@@ -1,6 +1,7 @@
 // Declared items that need a feature convray cannot render yet (a texture with a crackle
 // pigment, as stones2.inc declares dozens): the declaration is accepted with one warning per
-// feature, since POV-Ray's include files declare far more than a scene uses; using the item,
+// feature, since POV-Ray's include files declare far more than a scene uses (also as a
+// further layer of a declared texture); using the item,
 // directly or through another declaration, is an error where it is used that names the
 // feature and the declaration. Never a silently wrong picture.
 #include <gtest/gtest.h>
@@ -70,12 +71,15 @@ TEST(UnsupportedItems, WrittenInPlaceTheFeatureItselfIsTheError) {
   EXPECT_NE(expression.first_line.find("'min_extent' is not supported yet"), std::string::npos);
 }
 
-TEST(UnsupportedItems, ALayerOfADeclaredTextureIsReadPast) {
-  const ParseResult result = run(
+TEST(UnsupportedItems, ALayerThatNeedsOneMakesTheDeclaredTextureUnusable) {
+  const std::string text =
       "#declare Layered = texture { pigment { rgb 1 } }\n"
-      "texture { pigment { crackle color_map { [0 rgbt 1] [1 rgb 0] } } }\n"
-      "sphere { 0, 1 texture { Layered } }\n");
-  EXPECT_EQ(result.scene.objects.size(), 1u);
+      "texture { pigment { crackle color_map { [0 rgbt 1] [1 rgb 0] } } }\n";
+  EXPECT_EQ(run(text + "sphere { 0, 1 }\n").scene.objects.size(), 1u);
+  const auto used = scene_error(text + "sphere { 0, 1 texture { Layered } }\n");
+  EXPECT_EQ(used.loc.line, 3);
+  EXPECT_NE(used.first_line.find("'crackle' is not supported yet"), std::string::npos)
+      << used.first_line;
 }
 
 TEST(UnsupportedItems, SkySpheresAndCamerasToo) {
