@@ -112,6 +112,14 @@ struct Text {
   double thickness = 1.0;
 };
 
+// POV-Ray's `prism` with linear_sweep and linear_spline: closed polygons in the xz plane
+// (outline point (x, z)) extruded along y from height1 to height2 (height1 <= height2);
+// inside where an odd number of polygons enclose a point.
+struct Prism {
+  std::vector<std::vector<OutlinePiece>> polygons;  // straight pieces, each polygon closed
+  double height1 = 0.0, height2 = 1.0;
+};
+
 enum class CsgOperation { union_, intersection, difference, merge };
 struct Csg {
   CsgOperation operation = CsgOperation::union_;
@@ -119,7 +127,7 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
-                           Implicit, Csg, Polynomial, Text>;
+                           Implicit, Csg, Polynomial, Text, Prism>;
 
 // A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
 // empty stand-in, so that include files declaring such objects still work; placing it in the

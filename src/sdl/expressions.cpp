@@ -77,8 +77,10 @@ int Parser::Impl::binary_precedence(const LexToken& t) const {
       return 1;
     case '&':
       return 2;
+    // Before a list of points written without a comma, a '<' starts the first point.
     case '<':
     case kLessEqual:
+      return less_starts_vector > 0 ? 0 : 3;
     case '=':
     case kNotEqual:
       return 3;
@@ -250,6 +252,7 @@ Value Parser::Impl::parse_parenthesized() {
   const TokenRef open = ref();
   advance();
   ScopedValue not_in_vector(angle_depth, 0);
+  ScopedValue compare_again(less_starts_vector, 0);
   Value value = parse_expression();
   const LexToken& t = settle();
   if (!is_symbol(t, ')')) {

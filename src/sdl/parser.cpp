@@ -301,6 +301,11 @@ scene::Color Parser::parse_color() {
   return modified.get<Vector>()->as_color();
 }
 
+double Parser::parse_float_before_points() {
+  ScopedValue points_follow(impl_->less_starts_vector, 1);
+  return parse_float();
+}
+
 std::string Parser::parse_string() {
   impl_->settle();
   const TokenRef at = impl_->ref();

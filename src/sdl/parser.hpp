@@ -65,6 +65,9 @@ class Parser {
   // A float inside `< >` that an item writes out itself (matrix <m00, ..., m32>): a bare '>'
   // ends it instead of comparing, as in the core's own vector literals.
   double parse_float_in_angle_brackets();
+  // A float followed by a list of points without a comma (`prism { 0, 1, 4 <-1, 0>, ...`):
+  // a '<' after it starts the first point instead of comparing, as in POV-Ray.
+  double parse_float_before_points();
   // After `[`, `(`: the optional comma between items, as POV-Ray accepts it.
   void accept_comma() { accept(","); }
 

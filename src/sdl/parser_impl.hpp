@@ -162,7 +162,8 @@ struct Parser::Impl {
   Value* texture_declared_just_before();  // braces items::Block opened and has not closed (deferred_unsupported)
   int macro_depth = 0, include_depth = 0, function_depth = 0;
   int quiet_math = 0;   // > 0: math errors in a branch whose value is discarded
-  int angle_depth = 0;  // > 0: directly inside < >, where '>' ends the vector
+  int angle_depth = 0;
+  int less_starts_vector = 0;  // > 0: a '<' ends the float (parse_float_before_points)  // > 0: directly inside < >, where '>' ends the vector
   int frame_floor = 0;  // frames at or below this count are not left by lookahead
   long long tokens_read = 0;
 

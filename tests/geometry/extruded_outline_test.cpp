@@ -2,7 +2,7 @@
 // square hole and a disc made of quadratic pieces, whose crossings along rays and inside
 // points follow from elementary geometry; and the winding rule against a brute-force
 // point-in-polygon test of the finely subdivided curves.
-#include "geometry/text_shape.hpp"
+#include "geometry/extruded_outline.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,8 +42,8 @@ std::vector<Crossing> crossings_of(const Shape& shape, const Vec3& origin, const
   return out;
 }
 
-TEST(TextShape, RayAlongXCrossesTheFourSidesOfASquareWithAHole) {
-  const TextShape shape(square_with_hole(0.4), nullptr);
+TEST(ExtrudedOutlineShape, RayAlongXCrossesTheFourSidesOfASquareWithAHole) {
+  const ExtrudedOutlineShape shape(square_with_hole(0.4).glyphs, ExtrusionAxes{0, 1, 2, 0.0, 0.4}, nullptr);
   const auto hits = crossings_of(shape, Vec3(-1.0, 0.5, 0.2), Vec3(1, 0, 0));
   ASSERT_EQ(hits.size(), 4u);
   const double expected[4] = {1.0, 1.25, 1.75, 2.0};
@@ -56,8 +56,8 @@ TEST(TextShape, RayAlongXCrossesTheFourSidesOfASquareWithAHole) {
   EXPECT_TRUE(crossings_of(shape, Vec3(-1.0, 0.5, 0.5), Vec3(1, 0, 0)).empty());
 }
 
-TEST(TextShape, RayAlongZMeetsTheCapsWhereTheOutlineWinds) {
-  const TextShape shape(square_with_hole(0.4), nullptr);
+TEST(ExtrudedOutlineShape, RayAlongZMeetsTheCapsWhereTheOutlineWinds) {
+  const ExtrudedOutlineShape shape(square_with_hole(0.4).glyphs, ExtrusionAxes{0, 1, 2, 0.0, 0.4}, nullptr);
   const auto solid = crossings_of(shape, Vec3(0.1, 0.1, -3.0), Vec3(0, 0, 1));
   ASSERT_EQ(solid.size(), 2u);
   EXPECT_NEAR(solid[0].t, 3.0, 1e-12);
@@ -101,7 +101,7 @@ bool inside_polygon(const std::vector<OutlinePiece>& pieces, const Vec2& p) {
   return inside;
 }
 
-TEST(TextShape, WindingOfCurvedPiecesAgreesWithASubdividedPolygon) {
+TEST(ExtrudedOutlineShape, WindingOfCurvedPiecesAgreesWithASubdividedPolygon) {
   const std::vector<OutlinePiece> pieces = rounded_diamond();
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(-1.2, 1.2);
@@ -115,12 +115,12 @@ TEST(TextShape, WindingOfCurvedPiecesAgreesWithASubdividedPolygon) {
   EXPECT_GT(inside, 500);  // both answers were tested
 }
 
-TEST(TextShape, SideCrossingsOfACurveLieOnTheCurve) {
+TEST(ExtrudedOutlineShape, SideCrossingsOfACurveLieOnTheCurve) {
   // Rays in the plane z = 0.3 towards the middle: each side crossing is where the ray meets
   // the quadratic piece, so the point must satisfy the piece's implicit form. For the first
   // piece (-1,0) (-1,1) (0,1): x = -1 + s^2, y = 2 s - s^2, i.e. (x + 1) = (1 - (1 - y))^...
   // checked numerically: the nearest point of the densely sampled piece lies within 1e-6.
-  const TextShape shape(scene::Text{{rounded_diamond()}, 1.0}, nullptr);
+  const ExtrudedOutlineShape shape({rounded_diamond()}, ExtrusionAxes{0, 1, 2, 0.0, 1.0}, nullptr);
   for (int k = 0; k < 50; ++k) {
     const double angle = 2.0 * kPi * k / 50.0;
     const Vec3 origin(3.0 * std::cos(angle), 3.0 * std::sin(angle), 0.3);
@@ -139,6 +139,36 @@ TEST(TextShape, SideCrossingsOfACurveLieOnTheCurve) {
     // The normal points away from the middle.
     EXPECT_GT(glm::dot(hits[0].normal, Vec3(p.x, p.y, 0.0)), 0.0) << k;
   }
+}
+
+TEST(ExtrudedOutlineShape, PrismsAreInsideWhereAnOddNumberOfPolygonsEncloseAPoint) {
+  // Two overlapping squares in the xz plane, both counter-clockwise, extruded along y from
+  // -1 to 2: their overlap [1, 2] x [1, 2] is outside, as in POV-Ray's prisms.
+  std::vector<OutlinePiece> pieces = polygon({{0, 0}, {2, 0}, {2, 2}, {0, 2}});
+  const std::vector<OutlinePiece> second = polygon({{1, 1}, {3, 1}, {3, 3}, {1, 3}});
+  pieces.insert(pieces.end(), second.begin(), second.end());
+  const ExtrudedOutlineShape shape({pieces}, ExtrusionAxes{0, 2, 1, -1.0, 2.0, true}, nullptr);
+  EXPECT_TRUE(shape.inside(Vec3(0.5, 0.0, 0.5)));
+  EXPECT_FALSE(shape.inside(Vec3(1.5, 0.0, 1.5)));
+  EXPECT_TRUE(shape.inside(Vec3(2.5, 1.9, 2.5)));
+  EXPECT_FALSE(shape.inside(Vec3(0.5, 2.1, 0.5)));
+  // Along x at z = 1.5: in at 0, out at 1 (into the overlap), in at 2, out at 3; normals out
+  // of the solid whatever the polygons' orientation.
+  const auto hits = crossings_of(shape, Vec3(-1.0, 0.0, 1.5), Vec3(1, 0, 0));
+  ASSERT_EQ(hits.size(), 4u);
+  const double expected[4] = {1.0, 2.0, 3.0, 4.0};
+  const double normal_x[4] = {-1.0, 1.0, -1.0, 1.0};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(hits[size_t(i)].t, expected[i], 1e-12);
+    EXPECT_NEAR(hits[size_t(i)].normal.x, normal_x[i], 1e-12);
+  }
+  // Down along y: the caps at y = 2 (normal +y) and y = -1 (normal -y).
+  const auto caps = crossings_of(shape, Vec3(0.5, 5.0, 0.5), Vec3(0, -1, 0));
+  ASSERT_EQ(caps.size(), 2u);
+  EXPECT_NEAR(caps[0].t, 3.0, 1e-12);
+  EXPECT_EQ(caps[0].normal.y, 1.0);
+  EXPECT_NEAR(caps[1].t, 6.0, 1e-12);
+  EXPECT_EQ(caps[1].normal.y, -1.0);
 }
 
 }  // namespace
