@@ -67,12 +67,23 @@ struct PatternSpace {
   Transform transform;     // pattern space -> world
 };
 
+struct Pigment;
+
+// A `pigment_map` entry: at this pattern value, this whole pigment.
+struct PigmentMapEntry {
+  double value = 0.0;  // ascending
+  std::shared_ptr<const Pigment> pigment;
+};
+
 struct Pigment {
   PatternSpace space;
   Color color;                          // solid; also the colour where no map applies
   std::vector<ColorMapEntry> color_map; // empty: the pattern's default map (render/)
   // checker (and other block patterns): the listed colours, in order.
   std::vector<Color> block_colors;
+  // Set: the pattern's value picks (between two entries: mixes) whole pigments instead of
+  // colours; color_map is not used.
+  std::vector<PigmentMapEntry> pigment_map;
 };
 
 struct Finish {

@@ -83,6 +83,8 @@ ParsedMaterial parse_material(Parser& parser);
 // Where a texture is evaluated moves with the transforms applied after it: appended to the
 // pattern transforms of its pigment and normal.
 void move_texture(scene::Texture& texture, const scene::Transform& transform);
+// A pigment moved by `transform`, with the pigments of its pigment_map.
+void move_pigment(scene::Pigment& pigment, const scene::Transform& transform);
 scene::TexturePtr moved_texture(const scene::TexturePtr& texture,
                                 const scene::Transform& transform);
 // Moves every texture inside `object` (CSG children, mesh faces, blob and convolution

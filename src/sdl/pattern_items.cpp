@@ -34,7 +34,7 @@ constexpr std::string_view kUnsupportedPatterns[] = {
     "mandel",     "julia",        "image_map",    "bump_map",      "function",    "pigment_pattern",
     "object",     "density_file", "quilted",      "facets",        "cylindrical", "spherical",
     "boxed",      "planar",       "average",      "tiling",        "pavement",    "square",
-    "triangular", "slope",        "aoi",          "image_pattern", "magnet",      "pigment_map",
+    "triangular", "slope",        "aoi",          "image_pattern", "magnet",
     "normal_map", "slope_map",    "material_map", "texture_map",   "tiles",       "uv_mapping",
     "warp",       "gradient_map"};
 
