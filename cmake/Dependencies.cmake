@@ -6,6 +6,7 @@ find_package(CLI11 CONFIG REQUIRED)
 find_package(OpenImageIO CONFIG REQUIRED)
 find_package(embree 3 CONFIG REQUIRED)
 find_package(pegtl CONFIG REQUIRED)
+find_package(Freetype REQUIRED)
 
 # Debian's OpenImageIO config names /usr/include/opencv4 as an include directory, and CMake
 # refuses a missing one; we never use OpenCV, so drop it instead of installing libopencv-dev.

@@ -17,6 +17,7 @@ packages=(
   libglm-dev zlib1g-dev
   libembree-dev libtbb-dev libcli11-dev tao-pegtl-dev
   libopenimageio-dev openimageio-tools
+  libfreetype-dev  # TrueType glyph outlines for text objects (src/font/)
   libgtest-dev libbenchmark-dev
   clang libclang-rt-dev
   povray povray-examples time  # reference renders and timings (bench/, comparison scripts)

@@ -15,6 +15,7 @@
 #include "geometry/plane.hpp"
 #include "geometry/polynomial_surface.hpp"
 #include "geometry/sphere.hpp"
+#include "geometry/extruded_outline.hpp"
 #include "geometry/torus.hpp"
 #include "geometry/transformed.hpp"
 #include "geometry/triangle_mesh.hpp"
@@ -58,6 +59,8 @@ class ShapeBuilder {
   ShapePtr make(const scene::Cone& c, const Inherited& own) const;
   ShapePtr make(const scene::Torus& t, const Inherited& own) const;
   ShapePtr make(const scene::Polynomial& p, const Inherited& own) const;
+  ShapePtr make(const scene::Text& t, const Inherited& own) const;
+  ShapePtr make(const scene::Prism& p, const Inherited& own) const;
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
   ShapePtr make(const scene::TriangleMesh& m, const Inherited& own) const;
   ShapePtr make(const scene::Implicit& i, const Inherited& own) const;
@@ -124,6 +127,35 @@ ShapePtr ShapeBuilder::make(const scene::Polynomial& p, const Inherited& own) co
   require(p.order >= 1 && p.order <= kMaxPolynomialDegree, "poly: the order must be 1 to 8");
   for (double c : p.coefficients) require(std::isfinite(c), "poly: coefficients must be finite");
   return std::make_unique<PolynomialSurface>(p.order, p.coefficients, surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Text& t, const Inherited& own) const {
+  require(std::isfinite(t.thickness), "text: the thickness must be finite");
+  for (const auto& glyph : t.glyphs) {
+    for (const scene::OutlinePiece& piece : glyph) {
+      require(std::isfinite(piece.a.x + piece.a.y + piece.b.x + piece.b.y + piece.c.x + piece.c.y),
+              "text: the glyphs' outlines must be finite (is the offset?)");
+    }
+  }
+  return std::make_unique<ExtrudedOutlineShape>(t.glyphs, ExtrusionAxes{0, 1, 2, 0.0, t.thickness},
+                                                surface_for(own));
+}
+
+ShapePtr ShapeBuilder::make(const scene::Prism& p, const Inherited& own) const {
+  require(std::isfinite(p.height1) && std::isfinite(p.height2),
+          "prism: the heights must be finite");
+  for (const auto& polygon : p.polygons) {
+    for (const scene::OutlinePiece& piece : polygon) {
+      require(std::isfinite(piece.a.x + piece.a.y + piece.c.x + piece.c.y),
+              "prism: the points must be finite");
+    }
+  }
+  // Outline (x, z), extruded along y.
+  std::vector<scene::OutlinePiece> pieces;
+  for (const auto& polygon : p.polygons) pieces.insert(pieces.end(), polygon.begin(), polygon.end());
+  return std::make_unique<ExtrudedOutlineShape>(
+      std::vector<std::vector<scene::OutlinePiece>>{pieces},
+      ExtrusionAxes{0, 2, 1, p.height1, p.height2, true}, surface_for(own));
 }
 
 ShapePtr ShapeBuilder::make(const scene::Disc& d, const Inherited& own) const {

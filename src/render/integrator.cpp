@@ -87,27 +87,38 @@ Vec3 Integrator::trace(const Ray& ray, const RayState& state, double tmin,
 
 Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState& state,
                        RenderStats& stats) const {
-  const scene::Texture& texture = crossing.surface && crossing.surface->texture
-                                      ? *crossing.surface->texture
-                                      : fallback_texture();
   HitPoint hit;
   hit.point = ray.at(crossing.t);
+  const scene::Texture& texture =
+      crossing.surface && crossing.surface->texture
+          ? texture_at(*crossing.surface->texture, hit.point)
+          : fallback_texture();
   hit.view = ray.direction;
   hit.surface = crossing.surface;
+  hit.entering = glm::dot(ray.direction, crossing.normal) < 0.0;
+  return shade_layer(texture, crossing.normal, hit, state, stats);
+}
+
+Vec3 Integrator::shade_layer(const scene::Texture& texture, const Vec3& outward, HitPoint& hit,
+                             const RayState& state, RenderStats& stats) const {
   hit.finish = &texture.finish;
   hit.pigment = evaluate_pigment(texture.pigment, hit.point);
   // Bumps tilt the outward normal; then both turn to face the viewer (the inside of a solid
   // seen from within is lit like an outside).
-  hit.entering = glm::dot(ray.direction, crossing.normal) < 0.0;
-  const Vec3 shading = perturb_normal(texture.normal, hit.point, crossing.normal);
+  const Vec3 shading = perturb_normal(texture.normal, hit.point, outward);
   hit.normal = hit.entering ? shading : -shading;
 
-  const scene::Color& pigment = hit.pigment;
+  const scene::Color pigment = hit.pigment;
   Vec3 color = direct_light(hit, 1.0 - pigment.filter - pigment.transmit, stats);
   if (texture.finish.reflection != Vec3(0.0)) color += reflected_light(hit, state, stats);
   if (!pigment.opaque()) {
     const Vec3 factor = pigment.filter * pigment.rgb + Vec3(pigment.transmit);
-    color += factor * transmitted_light(hit, factor, state, stats);
+    if (texture.below) {
+      color += factor * shade_layer(texture_at(*texture.below, hit.point), outward, hit, state,
+                                    stats);
+    } else {
+      color += factor * transmitted_light(hit, factor, state, stats);
+    }
   }
   return color;
 }

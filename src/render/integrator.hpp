@@ -56,6 +56,10 @@ class Integrator {
              RenderStats& stats) const;
   Vec3 shade(const implicit::Ray& ray, const geometry::Crossing& crossing, const RayState& state,
              RenderStats& stats) const;
+  // One layer of a (possibly layered) texture at the hit: its own light, and what shows
+  // through its pigment: the layer below, or the light beyond the surface.
+  Vec3 shade_layer(const scene::Texture& texture, const Vec3& outward, HitPoint& hit,
+                   const RayState& state, RenderStats& stats) const;
   // Ambient, diffuse and highlights of all lights; `opacity` scales ambient and diffuse.
   Vec3 direct_light(const HitPoint& hit, double opacity, RenderStats& stats) const;
   // The fraction of light `index` that reaches the point (shadows, area lights).

@@ -79,7 +79,45 @@ const std::vector<ColorMapEntry>& default_color_map(Pattern pattern) {
   }
 }
 
+const scene::Texture& texture_at(const scene::Texture& texture, const Vec3& world_point) {
+  static const scene::Texture kDefault = scene::default_texture();
+  const scene::Texture* at = &texture;
+  while (at->blocks) {
+    const scene::TextureBlocks& blocks = *at->blocks;
+    const size_t block = size_t(int(pattern_value(blocks.space, world_point)));
+    if (block >= blocks.textures.size() || !blocks.textures[block]) return kDefault;
+    at = blocks.textures[block].get();
+  }
+  return *at;
+}
+
+namespace {
+
+// The pigments of a pigment_map at `value`, as a colour map mixes its colours.
+Color lookup_pigment_map(const std::vector<scene::PigmentMapEntry>& map, double value,
+                         const Vec3& world_point) {
+  const auto colour = [&](const scene::PigmentMapEntry& entry) {
+    return evaluate_pigment(*entry.pigment, world_point);
+  };
+  if (value <= map.front().value) return colour(map.front());
+  if (value >= map.back().value) return colour(map.back());
+  const auto above =
+      std::upper_bound(map.begin(), map.end(), value,
+                       [](double v, const scene::PigmentMapEntry& entry) { return v < entry.value; });
+  const scene::PigmentMapEntry& low = *(above - 1);
+  const scene::PigmentMapEntry& high = *above;
+  const double span = high.value - low.value;
+  if (!(span > 0.0)) return colour(high);
+  return scene::mix(colour(low), colour(high), (value - low.value) / span);
+}
+
+}  // namespace
+
 Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& world_point) {
+  if (!pigment.pigment_map.empty() && pigment.space.pattern != Pattern::solid) {
+    return lookup_pigment_map(pigment.pigment_map, pattern_value(pigment.space, world_point),
+                              world_point);
+  }
   switch (pigment.space.pattern) {
     case Pattern::solid:
       return pigment.color;

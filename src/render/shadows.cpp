@@ -16,9 +16,15 @@ constexpr int kMaxShadowLayers = 256;
 
 Vec3 surface_transmittance(const geometry::SurfaceInfo& surface, const Vec3& point) {
   if (!surface.texture) return Vec3(0.0);
-  const scene::Color color = evaluate_pigment(surface.texture->pigment, point);
-  if (color.opaque()) return Vec3(0.0);
-  return color.filter * color.rgb + Vec3(color.transmit);
+  // Light passes a layered texture through every layer.
+  Vec3 passed(1.0);
+  for (const scene::Texture* layer = &texture_at(*surface.texture, point); layer != nullptr;
+       layer = layer->below ? &texture_at(*layer->below, point) : nullptr) {
+    const scene::Color color = evaluate_pigment(layer->pigment, point);
+    if (color.opaque()) return Vec3(0.0);
+    passed *= color.filter * color.rgb + Vec3(color.transmit);
+  }
+  return passed;
 }
 
 Vec3 shadow_transmittance(const geometry::World& world, const geometry::Ray& ray, double tmin,

@@ -97,6 +97,29 @@ struct Implicit {
   bool is_blob = false;  // written as `blob`: POV-Ray's inside rule F > T - 1e-6 applies
 };
 
+// One piece of a glyph's outline: the quadratic Bezier curve from `a` to `c` with control
+// point `b` (a straight piece has `b` halfway).
+struct OutlinePiece {
+  Vec2 a, b, c;
+};
+
+// POV-Ray's `text { ttf FONT STRING THICKNESS, OFFSET }`: the outlines of the glyphs, placed
+// along +x in the font's em units (1 = one em), extruded from z = 0 to z = thickness. Every
+// closed contour runs clockwise around what it encloses (TrueType's orientation; holes
+// counter-clockwise); inside is where the contours wind around a point (nonzero rule).
+struct Text {
+  std::vector<std::vector<OutlinePiece>> glyphs;  // one entry per drawn glyph
+  double thickness = 1.0;
+};
+
+// POV-Ray's `prism` with linear_sweep and linear_spline: closed polygons in the xz plane
+// (outline point (x, z)) extruded along y from height1 to height2 (height1 <= height2);
+// inside where an odd number of polygons enclose a point.
+struct Prism {
+  std::vector<std::vector<OutlinePiece>> polygons;  // straight pieces, each polygon closed
+  double height1 = 0.0, height2 = 1.0;
+};
+
 enum class CsgOperation { union_, intersection, difference, merge };
 struct Csg {
   CsgOperation operation = CsgOperation::union_;
@@ -104,7 +127,7 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
-                           Implicit, Csg, Polynomial>;
+                           Implicit, Csg, Polynomial, Text, Prism>;
 
 // A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
 // empty stand-in, so that include files declaring such objects still work; placing it in the

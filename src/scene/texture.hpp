@@ -67,12 +67,23 @@ struct PatternSpace {
   Transform transform;     // pattern space -> world
 };
 
+struct Pigment;
+
+// A `pigment_map` entry: at this pattern value, this whole pigment.
+struct PigmentMapEntry {
+  double value = 0.0;  // ascending
+  std::shared_ptr<const Pigment> pigment;
+};
+
 struct Pigment {
   PatternSpace space;
   Color color;                          // solid; also the colour where no map applies
   std::vector<ColorMapEntry> color_map; // empty: the pattern's default map (render/)
   // checker (and other block patterns): the listed colours, in order.
   std::vector<Color> block_colors;
+  // Set: the pattern's value picks (between two entries: mixes) whole pigments instead of
+  // colours; color_map is not used.
+  std::vector<PigmentMapEntry> pigment_map;
 };
 
 struct Finish {
@@ -99,13 +110,34 @@ struct Interior {
   double ior = 1.0;
 };
 
+struct Texture;
+using TexturePtr = std::shared_ptr<const Texture>;
+
+// POV-Ray's block texture patterns (`texture { checker texture { A } texture { B } }`): at
+// each point the pattern's block number picks one whole texture, never a blend of two.
+struct TextureBlocks {
+  PatternSpace space;                // checker
+  std::vector<TexturePtr> textures;  // by block number
+};
+
 struct Texture {
   Pigment pigment;
   Finish finish;
   Normal normal;
+  // Set: the texture is made of these blocks, and its own pigment, finish and normal are
+  // not used.
+  std::shared_ptr<const TextureBlocks> blocks;
+  // Layered textures (`texture { A } texture { B }`: the later one lies on top): the layer
+  // under this one, seen where this one's pigment lets light through; null for the last.
+  TexturePtr below;
 };
 
-using TexturePtr = std::shared_ptr<const Texture>;
+// `upper` laid over `lower`: under upper's lowest layer.
+inline Texture layered_on(const Texture& lower, Texture upper) {
+  upper.below = upper.below ? std::make_shared<const Texture>(layered_on(lower, *upper.below))
+                            : std::make_shared<const Texture>(lower);
+  return upper;
+}
 
 // POV-Ray's default texture: black pigment, the default finish, no normal.
 inline Texture default_texture() { return Texture{}; }

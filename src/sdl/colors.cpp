@@ -28,6 +28,11 @@ bool is_srgb(Word word) {
   return word == Word::srgb || word == Word::srgbf || word == Word::srgbt || word == Word::srgbft;
 }
 
+bool is_whole_color_word(Word word) {
+  return is_srgb(word) || word == Word::rgb || word == Word::rgbf || word == Word::rgbt ||
+         word == Word::rgbft;
+}
+
 }  // namespace
 
 bool Parser::Impl::is_color_modifier(const LexToken& t) {
@@ -79,10 +84,14 @@ Value Parser::Impl::parse_color_group() {
   color.size = 5;
   color.color = true;
   const LexToken& first = settle();
+  // A whole colour was given (rgb..., or color EXPRESSION): a further rgb... starts the next
+  // colour, as in POV-Ray's `checker rgb 1 rgb 0`.
+  bool whole = false;
   if (first.word == Word::color || first.word == Word::colour) {
     const TokenRef at = ref();
     advance();
     if (!is_color_keyword(settle())) {
+      whole = true;
       const Value base = parse_binary(kAdditive);
       if (const double* f = base.get<double>()) {
         color.v = {*f, *f, *f, 0.0, 0.0};
@@ -95,6 +104,7 @@ Value Parser::Impl::parse_color_group() {
     const LexToken& t = lookahead();
     if (!is_color_keyword(t) || t.word == Word::color || t.word == Word::colour) break;
     const Word word = t.word;
+    if (whole && is_whole_color_word(word)) break;
     const TokenRef at = ref();
     advance();
     const Value operand = parse_binary(kAdditive);
@@ -125,6 +135,7 @@ Value Parser::Impl::parse_color_group() {
         break;
     }
     // rgb, rgbf, rgbt, rgbft and their srgb forms.
+    whole = true;
     Vector given;
     if (const double* f = operand.get<double>()) {
       given.v = {*f, *f, *f, *f, *f};

@@ -1,6 +1,7 @@
 // Directives other than control flow: #declare #local #undef #include #version #debug
 // #warning #error #default (and #macro, in macros.cpp). They run inside settle(), so item
 // parsers never see them.
+#include <algorithm>
 #include <optional>
 #include <string>
 
@@ -118,7 +119,21 @@ Value Parser::Impl::parse_rvalue() {
   const LexToken& t = settle();
   if (t.word == Word::array) return parse_array_declaration();
   Value item;
-  if (parse_item(owner, item)) return item;
+  bool is_item = false;
+  const std::optional<UnsupportedItem> unsupported =
+      owner.parse_or_skip_unsupported([&] { is_item = parse_item(owner, item); });
+  if (unsupported) {
+    // Once per feature: include files declare dozens of such items.
+    const std::string text =
+        unsupported->feature + ": items declared with it are accepted, using one is an error";
+    const bool told = std::any_of(warnings.begin(), warnings.end(), [&](const std::string& w) {
+      return w.find(text) != std::string::npos;
+    });
+    if (!told) warn(unsupported->feature_at, text);
+    item.data = std::make_shared<const UnsupportedItem>(*unsupported);
+    return item;
+  }
+  if (is_item) return item;
   return parse_expression();
 }
 
@@ -186,6 +201,37 @@ void Parser::Impl::directive_declare(bool local, TokenRef) {
   if (!functions.empty()) functions.erase(name);
   if (deprecation) deprecations[name] = std::move(*deprecation);
   accept_optional_semicolon();
+  if (const Value* stored = lookup(name);
+      stored && (stored->get<std::shared_ptr<const scene::Texture>>() ||
+                 stored->get<std::shared_ptr<const UnsupportedItem>>())) {
+    last_texture_name = name;
+    last_texture_end = tokens_read;
+  }
+}
+
+Value* Parser::Impl::texture_declared_just_before() {
+  if (last_texture_end != tokens_read) return nullptr;
+  return lookup(last_texture_name);
+}
+
+bool Parser::texture_declared_just_before() {
+  return impl_->texture_declared_just_before() != nullptr;
+}
+
+void Parser::add_declared_texture_layer(const std::optional<scene::Texture>& layer,
+                                        const std::optional<UnsupportedItem>& unsupported) {
+  // Called after the layer was read: the declaration is the one texture_declared_just_before
+  // found, and the next layer may follow this one.
+  Value* declared = impl_->lookup(impl_->last_texture_name);
+  impl_->last_texture_end = impl_->tokens_read;
+  if (declared == nullptr) return;
+  const auto* texture = declared->get<std::shared_ptr<const scene::Texture>>();
+  if (texture == nullptr || !*texture) return;  // unusable already
+  if (unsupported) {
+    declared->data = std::make_shared<const UnsupportedItem>(*unsupported);
+  } else if (layer) {
+    declared->data = std::make_shared<const scene::Texture>(scene::layered_on(**texture, *layer));
+  }
 }
 
 void Parser::Impl::directive_undef() {

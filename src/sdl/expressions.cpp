@@ -77,8 +77,10 @@ int Parser::Impl::binary_precedence(const LexToken& t) const {
       return 1;
     case '&':
       return 2;
+    // Before a list of points written without a comma, a '<' starts the first point.
     case '<':
     case kLessEqual:
+      return less_starts_vector > 0 ? 0 : 3;
     case '=':
     case kNotEqual:
       return 3;
@@ -250,6 +252,7 @@ Value Parser::Impl::parse_parenthesized() {
   const TokenRef open = ref();
   advance();
   ScopedValue not_in_vector(angle_depth, 0);
+  ScopedValue compare_again(less_starts_vector, 0);
   Value value = parse_expression();
   const LexToken& t = settle();
   if (!is_symbol(t, ')')) {
@@ -294,12 +297,15 @@ Value Parser::Impl::parse_identifier() {
   if (const Value* value = lookup(name)) {
     if (!deprecations.empty()) check_deprecated(name, at);
     if (const std::string* text = value->get<std::string>()) charge(text->size() / kBytesPerToken);
+    check_usable(*value, name, at);
     Value copy = *value;
     advance();
     if (!copy.is_set()) fail(at, quoted(name) + " has no value");
     // Indexing here rather than in parse_postfix, so that messages name the array.
     if (copy.get<std::shared_ptr<Array>>() != nullptr && plain_symbol('[')) {
-      return index_array(copy, ref(), name);
+      Value element = index_array(copy, ref(), name);
+      check_usable(element, name, at);
+      return element;
     }
     return copy;
   }
@@ -406,7 +412,9 @@ Value Parser::Impl::parse_keyword() {
   // POV-Ray's functions of objects and patterns.
   for (std::string_view unsupported :
        {"trace", "inside", "min_extent", "max_extent", "vturbulence", "eval_pigment"}) {
-    if (t.view() == unsupported) fail(at, quoted(unsupported) + " is not supported yet by convray");
+    if (t.view() == unsupported) {
+      fail_unsupported(loc(at), quoted(unsupported) + " is not supported yet by convray");
+    }
   }
   fail(at, "expected a value, found " + describe(t));
 }

@@ -108,6 +108,7 @@ Block::Block(Parser& parser, std::string name, SourceLoc keyword_loc)
       name_(std::move(name)),
       keyword_loc_(std::move(keyword_loc)) {
   parser_.expect("{", name_);
+  parser_.block_opened();
 }
 
 bool Block::more() {
@@ -118,6 +119,7 @@ bool Block::more() {
   }
   if (token.kind == Token::Kind::symbol && token.text == "}") {
     parser_.next();
+    parser_.block_closed();
     return false;
   }
   return true;

@@ -41,6 +41,8 @@ scene::ObjectPtr parse_plane(Parser& parser);
 scene::ObjectPtr parse_cylinder(Parser& parser);
 scene::ObjectPtr parse_cone(Parser& parser);
 scene::ObjectPtr parse_torus(Parser& parser);
+scene::ObjectPtr parse_text(Parser& parser);
+scene::ObjectPtr parse_prism(Parser& parser);
 scene::ObjectPtr parse_polynomial(Parser& parser);  // poly, cubic, quartic, quadric
 scene::ObjectPtr parse_disc(Parser& parser);
 scene::ObjectPtr parse_triangle(Parser& parser);  // triangle and smooth_triangle
@@ -68,13 +70,6 @@ ColorMap parse_color_map(Parser& parser);  // color_map or colour_map
 // Equal values in a row make a step.
 ColorMap ascending_equivalent(const ColorMap& map);
 
-// POV-Ray layers textures written one after another (`texture { A } texture { B }`: B drawn
-// over A, A seen through B's transparent parts). convray draws one layer: the later one,
-// unless it has transparent parts and the earlier one has none (then it is an overlay, and
-// its base is the better likeness).
-const scene::Texture& choose_texture_layer(const scene::Texture& earlier,
-                                           const scene::Texture& later);
-extern const char* const kLayeredTexturesWarning;
 
 // material { [M_ID] texture {...} interior {...} [transforms] }: the transforms move the
 // texture. A declared material is held as its texture (Value has no material yet), so
@@ -88,6 +83,8 @@ ParsedMaterial parse_material(Parser& parser);
 // Where a texture is evaluated moves with the transforms applied after it: appended to the
 // pattern transforms of its pigment and normal.
 void move_texture(scene::Texture& texture, const scene::Transform& transform);
+// A pigment moved by `transform`, with the pigments of its pigment_map.
+void move_pigment(scene::Pigment& pigment, const scene::Transform& transform);
 scene::TexturePtr moved_texture(const scene::TexturePtr& texture,
                                 const scene::Transform& transform);
 // Moves every texture inside `object` (CSG children, mesh faces, blob and convolution

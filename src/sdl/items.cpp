@@ -186,12 +186,14 @@ void parse_statement(Parser& parser, scene::Scene& scene) {
     parse_old_default(parser);
   } else if (at_word(parser, "texture")) {
     // Only a further layer of a texture declared just before can be here.
-    const SourceLoc loc = parser.peek().loc;
-    parse_texture(parser, parser.defaults().texture);
-    items::warn_once(parser, loc,
-                     "a texture at the top level is read as a further layer of the texture "
-                     "declared before it: layered textures are not supported, and the "
-                     "declared texture keeps its first layer only");
+    if (!parser.texture_declared_just_before()) {
+      parser.fail_here("a texture at the top level must follow a declared texture, as its "
+                       "next layer (#declare T = texture { ... } texture { ... })");
+    }
+    std::optional<scene::Texture> layer;
+    const std::optional<UnsupportedItem> unsupported = parser.parse_or_skip_unsupported(
+        [&] { layer = parse_texture(parser, parser.defaults().texture); });
+    parser.add_declared_texture_layer(layer, unsupported);
   } else if (at_word(parser, "rainbow") || at_word(parser, "media")) {
     const std::string word = parser.peek().text;
     const SourceLoc loc = take_keyword(parser);

@@ -7,9 +7,27 @@
 
 namespace convray::sdl::items {
 
+void move_pigment(scene::Pigment& pigment, const scene::Transform& transform) {
+  pigment.space.transform = pigment.space.transform.then(transform);
+  // The pigments of a pigment_map move with the pigment they are in.
+  for (scene::PigmentMapEntry& entry : pigment.pigment_map) {
+    scene::Pigment moved = *entry.pigment;
+    move_pigment(moved, transform);
+    entry.pigment = std::make_shared<const scene::Pigment>(std::move(moved));
+  }
+}
+
 void move_texture(scene::Texture& texture, const scene::Transform& transform) {
-  texture.pigment.space.transform = texture.pigment.space.transform.then(transform);
+  move_pigment(texture.pigment, transform);
   texture.normal.space.transform = texture.normal.space.transform.then(transform);
+  if (texture.blocks) {
+    // The blocks and the textures in them move together.
+    auto blocks = std::make_shared<scene::TextureBlocks>(*texture.blocks);
+    blocks->space.transform = blocks->space.transform.then(transform);
+    for (scene::TexturePtr& block : blocks->textures) block = moved_texture(block, transform);
+    texture.blocks = std::move(blocks);
+  }
+  if (texture.below) texture.below = moved_texture(texture.below, transform);
 }
 
 scene::TexturePtr moved_texture(const scene::TexturePtr& texture,

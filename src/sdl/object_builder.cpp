@@ -83,8 +83,7 @@ scene::Texture& ObjectBuilder::texture_to_modify() {
 void ObjectBuilder::parse_texture_modifier(const SourceLoc& loc) {
   const scene::Texture texture = parse_texture(parser_, parser_.defaults().texture);
   if (texture_given_) {
-    warn_once(parser_, loc, kLayeredTexturesWarning);
-    texture_ = scene::Texture(choose_texture_layer(*texture_, texture));
+    texture_ = scene::layered_on(*texture_, texture);
   } else {
     texture_ = texture;
   }

@@ -86,7 +86,7 @@ void parse_camera_item(Parser& parser, Block& block, CameraItems& items) {
     return;
   }
   if (at_any_word(parser, kUnsupportedProjections)) {
-    parser.fail_here("the " + parser.peek().text +
+    parser.fail_unsupported_here("the " + parser.peek().text +
                      " camera is not supported yet: convray "
                      "has the perspective and orthographic cameras");
   }
@@ -178,7 +178,11 @@ void apply_look_at(Parser& parser, CameraItems& items) {
   const double direction_length = glm::length(items.direction);
   const double up_length = glm::length(items.up);
   const double right_length = glm::length(items.right);
+  // Right-handed unless strictly left-handed: POV-Ray mirrors the picture also when up and
+  // direction are parallel (`up z` with the default direction, as prism3.inc writes it) and
+  // the product is zero.
   const double handedness = glm::dot(glm::cross(items.up, items.direction), items.right);
+  const bool mirrored = !(handedness > 0.0);
   const Vec3 view = items.look_at - items.location;
   if (view == Vec3(0.0)) {
     parser.fail(items.look_at_loc, "camera look_at is the camera's location");
@@ -193,7 +197,7 @@ void apply_look_at(Parser& parser, CameraItems& items) {
     parser.warn(items.look_at_loc,
                 "camera looks along its sky vector: the right vector is "
                 "kept as given (as POV-Ray does)");
-    items.right = glm::normalize(items.right) * (handedness < 0.0 ? -1.0 : 1.0);
+    items.right = glm::normalize(items.right) * (mirrored ? -1.0 : 1.0);
   }
   const Vec3 up = glm::cross(forward, items.right);
   if (up == Vec3(0.0)) {
@@ -203,7 +207,7 @@ void apply_look_at(Parser& parser, CameraItems& items) {
   }
   items.up = glm::normalize(up) * up_length;
   items.direction = forward * direction_length;
-  items.right *= handedness < 0.0 ? -right_length : right_length;
+  items.right *= mirrored ? -right_length : right_length;
 }
 
 }  // namespace

@@ -102,7 +102,7 @@ void parse_light_item(Parser& parser, Block& block, LightItems& items) {
     return;
   }
   if (at_word(parser, "cylinder")) {
-    parser.fail_here("cylindrical light sources are not supported yet");
+    parser.fail_unsupported_here("cylindrical light sources are not supported yet");
   }
   if (!at_any_word(parser, kLightWords)) block.unexpected(kLightWords);
   const std::string word = parser.peek().text;

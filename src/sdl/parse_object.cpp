@@ -35,6 +35,8 @@ constexpr ShapeKeyword kShapes[] = {
     {"merge", parse_csg},
     {"blob", parse_blob},
     {"convolution", parse_convolution},
+    {"text", parse_text},
+    {"prism", parse_prism},
     {"poly", parse_polynomial},
     {"cubic", parse_polynomial},
     {"quartic", parse_polynomial},
@@ -46,7 +48,7 @@ constexpr std::string_view kObjectWords[] = {
     "sphere",       "box",        "plane",           "cylinder", "cone",        "torus",
     "disc",         "triangle",   "smooth_triangle", "mesh",     "mesh2",       "union",
     "intersection", "difference", "merge",           "blob",     "convolution", "object",
-    "poly",         "cubic",      "quartic",         "quadric"};
+    "poly",         "cubic",      "quartic",         "quadric",  "text", "prism"};
 
 // The declared object named by the next token (consumed), or null when it names none.
 scene::ObjectPtr declared_object(Parser& parser) {
@@ -101,7 +103,7 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 }
 
 constexpr std::string_view kUnsupportedObjects[] = {
-    "text",       "lathe",         "prism",         "sor",          "superellipsoid",
+    "lathe",         "sor",          "superellipsoid",
     "polynomial", "isosurface",    "parametric",    "julia_fractal", "bicubic_patch",
     "height_field", "polygon",     "sphere_sweep",  "ovus",          "lemon"};
 

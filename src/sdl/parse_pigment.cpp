@@ -12,13 +12,31 @@ namespace {
 // POV-Ray's checker colours when the scene gives none.
 const scene::Color kCheckerDefaults[2] = {{Vec3(0.0, 0.0, 1.0)}, {Vec3(0.0, 1.0, 0.0)}};
 
+// `checker [COLOR [, COLOR]]` or `checker pigment { A } [,] pigment { B }` (the pigments
+// become a pigment_map with the blocks' values 0 and 1).
 void parse_checker_colors(Parser& parser, scene::Pigment& pigment) {
   pigment.block_colors = {kCheckerDefaults[0], kCheckerDefaults[1]};
+  std::vector<scene::PigmentMapEntry> pigments;
   for (size_t k = 0; k < 2; ++k) {
     if (k > 0) parser.accept_comma();
+    if (at_word(parser, "pigment")) {
+      pigments.push_back(
+          {double(k), std::make_shared<const scene::Pigment>(parse_pigment(parser, {}))});
+      continue;
+    }
     if (!at_color_start(parser)) break;
     pigment.block_colors[k] = color_param(parser);
   }
+  if (pigments.empty()) return;
+  for (size_t k = 0; k < 2; ++k) {
+    if (k < pigments.size() && pigments[k].value == double(k)) continue;
+    scene::Pigment solid;
+    solid.color = pigment.block_colors[k];
+    pigments.insert(pigments.begin() + std::ptrdiff_t(k),
+                    {double(k), std::make_shared<const scene::Pigment>(solid)});
+  }
+  pigments.resize(2);
+  pigment.pigment_map = std::move(pigments);
 }
 
 // One `[value color]` entry, or the old `[v1, v2 color c1 color c2]` pair.
@@ -80,28 +98,85 @@ ColorMap parse_color_map(Parser& parser) {
   return ascending_equivalent(map);
 }
 
+namespace {
+
+std::vector<scene::PigmentMapEntry> parse_pigment_map(Parser& parser);
+
+// One item of a pigment's body; false when the next token starts none.
+bool parse_pigment_item(Parser& parser, scene::Pigment& pigment) {
+  if (auto transform = parse_transform_modifier(parser)) {
+    move_pigment(pigment, *transform);
+  } else if (auto pattern = parse_pattern_keyword(parser, pigment.space)) {
+    // A new pattern replaces the colours of the one it is given over.
+    pigment.color_map.clear();
+    pigment.block_colors.clear();
+    pigment.pigment_map.clear();
+    if (*pattern == scene::Pattern::checker) parse_checker_colors(parser, pigment);
+  } else if (at_word(parser, "color_map") || at_word(parser, "colour_map")) {
+    pigment.color_map = parse_color_map(parser);
+    pigment.pigment_map.clear();
+  } else if (at_word(parser, "pigment_map")) {
+    pigment.pigment_map = parse_pigment_map(parser);
+    pigment.color_map.clear();
+    // The entries live in the pattern's space: the transforms written before the map move
+    // them too (those after it do, through move_pigment), as the povray binary draws them.
+    for (scene::PigmentMapEntry& entry : pigment.pigment_map) {
+      scene::Pigment moved = *entry.pigment;
+      move_pigment(moved, pigment.space.transform);
+      entry.pigment = std::make_shared<const scene::Pigment>(std::move(moved));
+    }
+  } else if (parse_pattern_modifier(parser, pigment.space)) {
+    return true;
+  } else if (at_color_start(parser)) {
+    pigment.color = color_param(parser);
+    pigment.space.pattern = scene::Pattern::solid;
+    pigment.color_map.clear();
+    pigment.block_colors.clear();
+    pigment.pigment_map.clear();
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// `pigment_map { [VALUE PIGMENT_BODY] ... }`: each entry is what a pigment { } holds (a
+// colour, a declared pigment and its modifiers, a pattern ...).
+std::vector<scene::PigmentMapEntry> parse_pigment_map(Parser& parser) {
+  Block block(parser, "pigment_map", take_keyword(parser));
+  std::vector<scene::PigmentMapEntry> map;
+  while (block.more()) {
+    parser.expect("[", "pigment_map");
+    const double value = float_param(parser, "the pigment_map entry's value");
+    parser.accept_comma();
+    scene::Pigment entry;
+    if (auto declared = declared_pigment_or_color(parser)) entry = *declared;
+    while (!parser.at("]")) {
+      if (!parse_pigment_item(parser, entry)) {
+        parser.fail_here("unexpected '" + parser.peek().text + "' in a pigment_map entry");
+      }
+    }
+    parser.expect("]", "pigment_map entry");
+    if (!map.empty() && value < map.back().value) {
+      // Entries out of order: POV-Ray keeps the list as written; ours must ascend.
+      parser.fail(block.loc(), "pigment_map entries must be in ascending order of value");
+    }
+    map.push_back({value, std::make_shared<const scene::Pigment>(std::move(entry))});
+  }
+  if (map.empty()) parser.fail(block.loc(), "pigment_map has no entries");
+  return map;
+}
+
+}  // namespace
+
 scene::Pigment parse_pigment(Parser& parser, const scene::Pigment& start) {
   const SourceLoc loc = take_keyword(parser);
   Block block(parser, "pigment", loc);
   scene::Pigment pigment = start;
   if (auto declared = declared_pigment_or_color(parser)) pigment = *declared;
-  static constexpr std::string_view kMapWords[] = {"color_map", "colour_map", "color"};
+  static constexpr std::string_view kMapWords[] = {"color_map", "colour_map", "pigment_map",
+                                                   "color"};
   while (block.more()) {
-    if (auto pattern = parse_pattern_keyword(parser, pigment.space)) {
-      // A new pattern replaces the colours of the one it is given over.
-      pigment.color_map.clear();
-      pigment.block_colors.clear();
-      if (*pattern == scene::Pattern::checker) parse_checker_colors(parser, pigment);
-    } else if (at_word(parser, "color_map") || at_word(parser, "colour_map")) {
-      pigment.color_map = parse_color_map(parser);
-    } else if (parse_pattern_modifier(parser, pigment.space)) {
-      continue;
-    } else if (at_color_start(parser)) {
-      pigment.color = color_param(parser);
-      pigment.space.pattern = scene::Pattern::solid;
-      pigment.color_map.clear();
-      pigment.block_colors.clear();
-    } else {
+    if (!parse_pigment_item(parser, pigment)) {
       block.unexpected(pattern_words(), kMapWords, pattern_modifier_words());
     }
   }

@@ -5,6 +5,23 @@
 
 namespace convray::sdl::items {
 
+namespace {
+
+// `checker texture { A } [,] texture { B }`: the texture becomes those blocks.
+void parse_texture_blocks(Parser& parser, scene::Texture& texture) {
+  auto blocks = std::make_shared<scene::TextureBlocks>();
+  parse_pattern_keyword(parser, blocks->space);
+  for (int k = 0; k < 2 && at_word(parser, "texture"); ++k) {
+    blocks->textures.push_back(
+        std::make_shared<const scene::Texture>(parse_texture(parser, parser.defaults().texture)));
+    parser.accept_comma();
+  }
+  texture = scene::Texture{};
+  texture.blocks = std::move(blocks);
+}
+
+}  // namespace
+
 scene::Texture parse_texture(Parser& parser, const scene::Texture& start) {
   const SourceLoc loc = take_keyword(parser);
   Block block(parser, "texture", loc);
@@ -13,7 +30,14 @@ scene::Texture parse_texture(Parser& parser, const scene::Texture& start) {
   static constexpr std::string_view kWords[] = {"pigment", "finish", "normal", "translate",
                                                 "rotate",  "scale",  "matrix", "transform"};
   while (block.more()) {
-    if (at_word(parser, "pigment")) {
+    if (texture.blocks && (at_word(parser, "pigment") || at_word(parser, "finish") ||
+                           at_word(parser, "normal"))) {
+      parser.fail_here("a texture made of blocks (texture { checker texture {...} texture "
+                       "{...} }) takes no " + parser.peek().text + " of its own");
+    }
+    if (at_word(parser, "checker")) {
+      parse_texture_blocks(parser, texture);
+    } else if (at_word(parser, "pigment")) {
       texture.pigment = parse_pigment(parser, texture.pigment);
     } else if (at_word(parser, "finish")) {
       texture.finish = parse_finish(parser, texture.finish);
@@ -21,40 +45,20 @@ scene::Texture parse_texture(Parser& parser, const scene::Texture& start) {
       texture.normal = parse_normal(parser, texture.normal);
     } else if (auto transform = parse_transform_modifier(parser)) {
       move_texture(texture, *transform);
+    } else if (texture.blocks && at_any_word(parser, pattern_modifier_words())) {
+      // Turbulence and the like bend the blocks' pattern.
+      scene::TextureBlocks bent = *texture.blocks;
+      parse_pattern_modifier(parser, bent.space);
+      texture.blocks = std::make_shared<const scene::TextureBlocks>(std::move(bent));
     } else if (at_any_word(parser, pattern_words()) ||
                at_any_word(parser, unsupported_pattern_words())) {
-      parser.fail_here("texture patterns and maps ('" + parser.peek().text +
+      parser.fail_unsupported_here("texture patterns and maps ('" + parser.peek().text +
                        "' in a texture) are not supported yet by convray");
     } else {
       block.unexpected(kWords);
     }
   }
   return texture;
-}
-
-namespace {
-
-bool is_opaque(const scene::Pigment& pigment) {
-  if (pigment.space.pattern == scene::Pattern::solid) return pigment.color.opaque();
-  for (const scene::ColorMapEntry& entry : pigment.color_map) {
-    if (!entry.color.opaque()) return false;
-  }
-  for (const scene::Color& color : pigment.block_colors) {
-    if (!color.opaque()) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
-const char* const kLayeredTexturesWarning =
-    "layered textures are not supported: convray draws one layer, the later one unless it is "
-    "a transparent overlay on an opaque one";
-
-const scene::Texture& choose_texture_layer(const scene::Texture& earlier,
-                                           const scene::Texture& later) {
-  if (is_opaque(later.pigment) || !is_opaque(earlier.pigment)) return later;
-  return earlier;
 }
 
 ParsedMaterial parse_material(Parser& parser) {

@@ -301,6 +301,11 @@ scene::Color Parser::parse_color() {
   return modified.get<Vector>()->as_color();
 }
 
+double Parser::parse_float_before_points() {
+  ScopedValue points_follow(impl_->less_starts_vector, 1);
+  return parse_float();
+}
+
 std::string Parser::parse_string() {
   impl_->settle();
   const TokenRef at = impl_->ref();
@@ -314,6 +319,7 @@ const Value* Parser::peek_declared() {
   if (value != nullptr && !impl_->deprecations.empty()) {
     impl_->check_deprecated(t.view(), impl_->ref());
   }
+  if (value != nullptr) impl_->check_usable(*value, t.view(), impl_->ref());
   return value;
 }
 
@@ -322,6 +328,15 @@ Defaults& Parser::defaults() { return impl_->defaults; }
 
 std::string Parser::resolve_file(const std::string& name, const SourceLoc& loc) const {
   return impl_->resolve(name, loc, true);
+}
+
+std::string Parser::resolve_file(const std::string& name, const SourceLoc& loc,
+                                 const std::string& file_type) const {
+  if (std::string found = impl_->resolve(name, loc, false); !found.empty()) return found;
+  if (std::string typed = impl_->resolve(name + file_type, loc, false); !typed.empty()) {
+    return typed;
+  }
+  return impl_->resolve(name, loc, true);  // fails, saying where it looked
 }
 
 void Parser::fail(const SourceLoc& loc, const std::string& message) const {

@@ -6,8 +6,10 @@
 //
 // Errors are InputError at `file:line:col` of the offending token. The parser knows nothing
 // of rendering: it produces a scene::Scene of plain records.
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -63,6 +65,9 @@ class Parser {
   // A float inside `< >` that an item writes out itself (matrix <m00, ..., m32>): a bare '>'
   // ends it instead of comparing, as in the core's own vector literals.
   double parse_float_in_angle_brackets();
+  // A float followed by a list of points without a comma (`prism { 0, 1, 4 <-1, 0>, ...`):
+  // a '<' after it starts the first point instead of comparing, as in POV-Ray.
+  double parse_float_before_points();
   // After `[`, `(`: the optional comma between items, as POV-Ray accepts it.
   void accept_comma() { accept(","); }
 
@@ -79,12 +84,39 @@ class Parser {
   // A file named in the scene (mesh, include), resolved as POV-Ray resolves includes: the
   // scene's folder, the +L paths, the installed include folder. Fails at `loc` if not found.
   std::string resolve_file(const std::string& name, const SourceLoc& loc) const;
+  // The same, trying NAME + `file_type` when NAME itself is not found, as POV-Ray appends a
+  // file's type (`text { ttf "cyrvetic" ... }` reads cyrvetic.ttf).
+  std::string resolve_file(const std::string& name, const SourceLoc& loc,
+                           const std::string& file_type) const;
 
   // Errors and warnings, with the source line and a caret when the location has one.
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] void fail_here(const std::string& message);  // at peek()
   void warn(const SourceLoc& loc, const std::string& message);
   const std::vector<std::string>& warnings() const;
+  // For what convray knows and cannot render yet: an UnsupportedError, which a declaration
+  // may defer (parse_or_skip_unsupported).
+  [[noreturn]] void fail_unsupported(const SourceLoc& loc, const std::string& message) const;
+  [[noreturn]] void fail_unsupported_here(const std::string& message);
+
+  // `#declare T = texture { A } texture { B }`: the parser stores T after its first texture
+  // (looking further would run a following directive too early), so the texture statements
+  // read right after the declaration are its further layers: whether one is next, and then
+  // the layer read, laid over T (or, when the layer needs what convray cannot render yet,
+  // T becomes unusable with it).
+  bool texture_declared_just_before();
+  void add_declared_texture_layer(const std::optional<scene::Texture>& layer,
+                                  const std::optional<UnsupportedItem>& unsupported);
+
+  // --- Declarations that need what convray cannot render yet.
+  // items::Block reports each `{` it opens and each `}` that closes one.
+  void block_opened();
+  void block_closed();
+  // Runs `parse`. When it fails with an UnsupportedError inside braces that it opened
+  // itself, the rest of those braces is read past and the error is returned instead: the
+  // item declared with it stands until it is used (peek_declared and expressions then fail
+  // with the error). Other failures, and unsupported ones outside braces, propagate.
+  std::optional<UnsupportedItem> parse_or_skip_unsupported(const std::function<void()>& parse);
 
   // Global identifiers after parsing (for `convray field scene.pov --object NAME`).
   const std::map<std::string, Value>& globals() const;

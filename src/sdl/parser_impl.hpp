@@ -153,9 +153,17 @@ struct Parser::Impl {
   bool assumed_gamma_given = false;  // global_settings { assumed_gamma ... } was read
 
   int nesting_depth = 0;
+  int open_blocks = 0;
+  // The texture the last #declare stored and the token count right after it: a texture
+  // statement read just there is its next layer (layer_onto_declared_texture).
+  std::string last_texture_name;
+  long long last_texture_end = -1;
+  // That texture's (or unusable item's) value, if no token was read since it was declared.
+  Value* texture_declared_just_before();  // braces items::Block opened and has not closed (deferred_unsupported)
   int macro_depth = 0, include_depth = 0, function_depth = 0;
   int quiet_math = 0;   // > 0: math errors in a branch whose value is discarded
-  int angle_depth = 0;  // > 0: directly inside < >, where '>' ends the vector
+  int angle_depth = 0;
+  int less_starts_vector = 0;  // > 0: a '<' ends the float (parse_float_before_points)  // > 0: directly inside < >, where '>' ends the vector
   int frame_floor = 0;  // frames at or below this count are not left by lookahead
   long long tokens_read = 0;
 
@@ -214,6 +222,12 @@ struct Parser::Impl {
   [[noreturn]] void fail(const SourceLoc& at, const std::string& message) const;
   [[noreturn]] void fail(TokenRef at, const std::string& message) const { fail(loc(at), message); }
   [[noreturn]] void fail_here(const std::string& message) { fail(ref(), message); }
+  // An UnsupportedError; `feature` (default: the message) is what a deferring declaration
+  // keeps.
+  [[noreturn]] void fail_unsupported(const SourceLoc& at, const std::string& message,
+                                     const std::string& feature = "") const;
+  // Fails at `at` if `value` (the identifier `name`'s) is an UnsupportedItem.
+  void check_usable(const Value& value, std::string_view name, TokenRef at) const;
   void warn(const SourceLoc& at, const std::string& message);
   const SourceFile& load_file(const std::string& path, const SourceLoc& requested_at);
   std::string resolve(const std::string& name, const SourceLoc& at, bool must_exist) const;

@@ -34,7 +34,7 @@ constexpr std::string_view kUnsupportedPatterns[] = {
     "mandel",     "julia",        "image_map",    "bump_map",      "function",    "pigment_pattern",
     "object",     "density_file", "quilted",      "facets",        "cylindrical", "spherical",
     "boxed",      "planar",       "average",      "tiling",        "pavement",    "square",
-    "triangular", "slope",        "aoi",          "image_pattern", "magnet",      "pigment_map",
+    "triangular", "slope",        "aoi",          "image_pattern", "magnet",
     "normal_map", "slope_map",    "material_map", "texture_map",   "tiles",       "uv_mapping",
     "warp",       "gradient_map"};
 
@@ -52,7 +52,7 @@ Keywords unsupported_pattern_words() { return kUnsupportedPatterns; }
 
 std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::PatternSpace& space) {
   if (at_any_word(parser, kUnsupportedPatterns)) {
-    parser.fail_here("'" + parser.peek().text + "' is not supported yet by convray");
+    parser.fail_unsupported_here("'" + parser.peek().text + "' is not supported yet by convray");
   }
   for (const PatternKeyword& keyword : kPatterns) {
     if (!at_word(parser, keyword.word)) continue;

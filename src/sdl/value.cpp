@@ -38,6 +38,9 @@ std::string type_name(const Value& value) {
     std::string operator()(const std::shared_ptr<const scene::SkySphere>&) const {
       return "a sky_sphere";
     }
+    std::string operator()(const std::shared_ptr<const UnsupportedItem>&) const {
+      return "an item convray cannot render yet";
+    }
   };
   return std::visit(Namer{}, value.data);
 }

@@ -28,6 +28,14 @@ struct Vector {
   scene::Color as_color() const { return {Vec3(v[0], v[1], v[2]), v[3], v[4]}; }
 };
 
+// What a declared identifier holds when its item needs a feature convray cannot render yet
+// (a texture with a crackle pigment, a sky_sphere with a pigment_map): declaring it is
+// accepted, as long as it is never used, which fails with `feature` at `feature_at`.
+struct UnsupportedItem {
+  std::string feature;  // "'crackle' is not supported yet by convray"
+  SourceLoc feature_at;
+};
+
 struct Value;
 struct Array {
   std::vector<int> dimensions;  // #declare A = array[2][3]: {2, 3}
@@ -49,7 +57,8 @@ struct Value {
                std::shared_ptr<const scene::Transform>,
                std::shared_ptr<const scene::Camera>,
                std::shared_ptr<const scene::Light>,
-               std::shared_ptr<const scene::SkySphere>>
+               std::shared_ptr<const scene::SkySphere>,
+               std::shared_ptr<const UnsupportedItem>>
       data;
   SourceLoc loc;  // where it was computed or declared, for messages
 

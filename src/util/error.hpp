@@ -39,4 +39,19 @@ class InputError : public std::runtime_error {
   std::string message_;
 };
 
+// A feature of the input that convray knows and cannot render yet ("'crackle' is not supported
+// yet by convray"). `feature()` is the message without the source line under it: the scene
+// parser lets a declaration that needs such a feature stand, and quotes it where the
+// declaration is used.
+class UnsupportedError : public InputError {
+ public:
+  UnsupportedError(SourceLoc loc, const std::string& message, std::string feature)
+      : InputError(std::move(loc), message), feature_(printable(feature)) {}
+
+  const std::string& feature() const { return feature_; }
+
+ private:
+  std::string feature_;
+};
+
 }  // namespace convray

@@ -139,29 +139,36 @@ TEST(ItemsObject, PigmentOnAnObjectModifiesItsTextureFromTheDefaults) {
   EXPECT_EQ(texture.finish.phong, 1.0);
 }
 
-TEST(ItemsObject, SecondTextureReplacesTheFirstWithAWarning) {
-  const auto result =
-      parse("sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgb x } } }");
-  expect_near(only_object(result)->texture->pigment.color.rgb, Vec3(1, 0, 0));
-  EXPECT_TRUE(has_warning(result, "layered textures are not supported"));
-}
-
-TEST(ItemsObject, TransparentOverlayKeepsTheOpaqueBaseLayer) {
-  // POV-Ray would show the base through the overlay's transparent parts; the base is the
-  // closer likeness of the two.
+TEST(ItemsObject, SecondTextureLiesOverTheFirst) {
+  // POV-Ray's layered textures: the later one on top, the earlier seen through it.
   const auto result = parse(
       "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <1, 0, 0, 0.7> } } }");
-  expect_near(only_object(result)->texture->pigment.color.rgb, Vec3(1.0));
+  const scene::Texture& top = *only_object(result)->texture;
+  expect_near(top.pigment.color.rgb, Vec3(1, 0, 0));
+  ASSERT_TRUE(top.below);
+  expect_near(top.below->pigment.color.rgb, Vec3(1.0));
+  EXPECT_FALSE(top.below->below);
 }
 
-TEST(ItemsObject, LayeredTextureDeclarationKeepsItsFirstLayer) {
+TEST(ItemsObject, LayeredTextureDeclarationKeepsEveryLayer) {
   const auto result = parse(R"(
     #declare Layered = texture { pigment { rgb <0, 1, 0> } }
                        texture { pigment { bozo color_map { [0 rgbt <1, 0, 0, 1>] [1 rgb 0] } } }
+                       texture { pigment { rgbt <0, 0, 1, 0.5> } }
     #declare Next = texture { Layered }
-    sphere { 0, 1 texture { Next } })");
-  expect_near(only_object(result)->texture->pigment.color.rgb, Vec3(0, 1, 0));
-  EXPECT_TRUE(has_warning(result, "layered textures are not supported"));
+    sphere { 0, 1 texture { Next } translate x })");
+  const scene::Texture& top = *only_object(result)->texture;
+  expect_near(top.pigment.color.rgb, Vec3(0, 0, 1));
+  ASSERT_TRUE(top.below && top.below->below);
+  EXPECT_EQ(top.below->pigment.space.pattern, scene::Pattern::bozo);
+  expect_near(top.below->below->pigment.color.rgb, Vec3(0, 1, 0));
+  // The object's translation moves every layer's pattern.
+  expect_near(top.below->pigment.space.transform.inverse_point(Vec3(1, 0, 0)), Vec3(0.0));
+}
+
+TEST(ItemsObject, ATopLevelTextureMustFollowADeclaredOne) {
+  EXPECT_TRUE(fails_with("sphere { 0, 1 }\ntexture { pigment { rgb 1 } }", 2, 1,
+                         "must follow a declared texture"));
 }
 
 TEST(ItemsObject, DeclarationsFollowingEachOtherWithoutSemicolons) {
@@ -183,8 +190,9 @@ TEST(ItemsObject, DeclaredMaterialKeepsItsTexture) {
 TEST(ItemsObject, UnsupportedObjectsFailButMayBeDeclared) {
   EXPECT_TRUE(fails_with("union { sphere { 0, 1 } lathe { } }", 1, 25,
                          "'lathe' objects are not supported yet"));
-  EXPECT_TRUE(fails_with("text { ttf \"a.ttf\" \"A\" 1, 0 }", 1, 1,
-                         "'text' objects are not supported yet"));
+  // text objects are drawn now: a missing font is the error, at its name.
+  EXPECT_TRUE(fails_with("text { ttf \"no-such-font.ttf\" \"A\" 1, 0 }", 1, 12,
+                         "file not found: 'no-such-font.ttf'"));
   // Include files declare such objects that most scenes never use: declaring one warns.
   const auto result = parse("#declare L = lathe { 2, <0, 0>, <1, 1> }");
   EXPECT_TRUE(has_warning(result, "'lathe' objects are not supported yet"));
