@@ -41,7 +41,7 @@ bool ObjectBuilder::parse_modifier() {
   if (auto transform = parse_transform_modifier(parser_)) {
     apply_transform(*transform);
   } else if (word == "texture") {
-    parse_texture_modifier(loc);
+    parse_texture_modifier();
   } else if (word == "pigment") {
     scene::Texture& texture = texture_to_modify();
     texture.pigment = parse_pigment(parser_, texture.pigment);
@@ -80,7 +80,7 @@ scene::Texture& ObjectBuilder::texture_to_modify() {
   return *texture_;
 }
 
-void ObjectBuilder::parse_texture_modifier(const SourceLoc& loc) {
+void ObjectBuilder::parse_texture_modifier() {
   const scene::Texture texture = parse_texture(parser_, parser_.defaults().texture);
   if (texture_given_) {
     texture_ = scene::layered_on(*texture_, texture);

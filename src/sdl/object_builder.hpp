@@ -43,7 +43,7 @@ class ObjectBuilder {
  private:
   void apply_transform(const scene::Transform& transform);
   scene::Texture& texture_to_modify();
-  void parse_texture_modifier(const SourceLoc& loc);
+  void parse_texture_modifier();
   void parse_material();
   void parse_clip_or_bound(bool clip);
   std::vector<scene::ObjectPtr> parse_bounding_objects(const std::string& name);
