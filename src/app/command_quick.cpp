@@ -118,7 +118,7 @@ void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surf
       << " pixels)\n"
       << "tracer: "
       << (o.reference ? "reference (exact field, Lipschitz-safe march)"
-                      : "fast (fits, Bezier clipping)")
+                      : "fast (window march on the summed exact field)")
       << "\n"
       << "rays: " << s.camera_rays + s.shadow_rays << " (camera " << s.camera_rays << ", shadow "
       << s.shadow_rays << ")\n"
@@ -127,7 +127,7 @@ void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surf
       << "primitives per ray: " << number(per_query) << " (support intervals crossed)\n"
       << "field evaluations: " << trace.field_evaluations << "\n"
       << "roots: " << trace.roots << "\n"
-      << "fits: " << trace.fits << "\n"
+      << "fits: " << trace.fits << (o.reference ? "" : " (window-march steps; spheres entered)") << "\n"
       << "subdivisions: " << trace.subdivisions << "\n"
       << "fallbacks: " << trace.fallbacks << "\n"
       << "surface memory: " << number(double(bytes) / (1024.0 * 1024.0)) << " MiB ("

@@ -8,8 +8,10 @@ namespace convray::implicit {
 struct TraceStats {
   uint64_t rays = 0;               // surface queries (camera and shadow rays)
   uint64_t primitives = 0;         // support intervals gathered (primitives crossed)
-  uint64_t fits = 0;               // per-primitive degree-6 fits built (spheres: entered)
-  uint64_t subdivisions = 0;       // fits split because their error bound was too large
+  uint64_t fits = 0;               // degree-6 fits built, or window-march steps taken
+                                   // (spheres: entered)
+  uint64_t subdivisions = 0;       // fits split because their error bound was too large, or
+                                   // windows halved by the march's two-sided test
   uint64_t field_evaluations = 0;  // exact per-primitive field evaluations (or sphere terms)
   uint64_t roots = 0;              // roots found and polished on the exact field
   uint64_t fallbacks = 0;          // rays where the fast path handed over to exact tracing
