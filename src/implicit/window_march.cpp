@@ -45,8 +45,10 @@ enum class Want { value, slope, gradient };
 // adds its exact quartic in t instead (field/triangle_quartic.hpp): at large R most of them.
 class ClusterField {
  public:
+  // `origin_t`: where the march starts, the quartics' s = 0 (kept near the samples, so that
+  // their powers of s do not cancel).
   ClusterField(const Impl& s, const Ray& ray, std::span<const accel::SupportInterval> cluster,
-               TraceStats& stats);
+               double origin_t, TraceStats& stats);
 
   Sample sample(double t);  // value and slope, in units of T
   double value_minus_threshold(double t);  // F / T - 1
@@ -79,7 +81,7 @@ class ClusterField {
   TraceStats& stats_;
   size_t batches_used_ = 0;
   double reach_ = -kInfinity;
-  double origin_t_ = 0.0;  // where the quartics' parameter s is 0 (near the cluster)
+  double origin_t_ = 0.0;  // where the quartics' parameter s is 0
   // Storage kept from ray to ray (a cluster is marched by one thread at a time).
   static thread_local std::vector<Member> members_;  // every primitive, for the curvature
   static thread_local std::vector<Member> others_;   // those outside the batches
@@ -91,8 +93,9 @@ thread_local std::vector<ClusterField::Member> ClusterField::others_;
 thread_local std::vector<ClusterField::Batch> ClusterField::batches_;
 
 ClusterField::ClusterField(const Impl& s, const Ray& ray,
-                           std::span<const accel::SupportInterval> cluster, TraceStats& stats)
-    : s_(s), ray_(ray), stats_(stats), origin_t_(cluster.front().enter) {
+                           std::span<const accel::SupportInterval> cluster, double origin_t,
+                           TraceStats& stats)
+    : s_(s), ray_(ray), stats_(stats), origin_t_(origin_t) {
   members_.clear();
   others_.clear();
   for (const accel::SupportInterval& iv : cluster) {
@@ -348,8 +351,8 @@ void march_cluster(const Impl& surface, const Ray& ray,
                    std::span<const accel::SupportInterval> cluster, double tmin, double tmax,
                    RootMode mode, std::vector<double>& out, TraceStats& stats,
                    std::optional<Vec3>* first_gradient) {
-  ClusterField field(surface, ray, cluster, stats);
   const double from = std::max(tmin, cluster.front().enter);
+  ClusterField field(surface, ray, cluster, from, stats);
   const double to = std::min(tmax, field.reach());
   if (!(from < to)) return;
   Marcher marcher(surface, field, mode, out, stats);
