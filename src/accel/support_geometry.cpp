@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "accel/triangle_span_batch.hpp"
+
 namespace convray::accel::detail {
 
 Box3 GeometrySource::support_box(uint32_t i) const {
@@ -92,6 +94,12 @@ void check(const char* step) {
   }
 }
 
+// A triangle whose support box the line crosses, its exact span still to be computed.
+struct TriangleCandidate {
+  const GeometrySource* source;
+  uint32_t primitive;
+};
+
 // Extends RTCIntersectContext (it must come first) with the exact double-precision ray.
 struct LineContext {
   RTCIntersectContext embree;
@@ -99,6 +107,7 @@ struct LineContext {
   double tmin, tmax;
   const std::vector<GeometrySource>* sources;
   std::vector<SupportInterval>* out;
+  std::vector<TriangleCandidate>* triangles;  // spans computed after the traversal, batched
 };
 
 struct PointContext {
@@ -129,9 +138,41 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
   const GeometrySource* source = instance == RTC_INVALID_GEOMETRY_ID
                                      ? static_cast<const GeometrySource*>(args->geometryUserPtr)
                                      : &(*line->sources)[instance];
+  if (source->kind == GeometrySource::Kind::triangle) {
+    const field::Triangle& t = source->triangles[args->primID];
+    if (triangle_may_cross(line->origin, line->direction, t, source->radius(args->primID))) {
+      line->triangles->push_back({source, args->primID});
+    }
+    return;
+  }
   const Span s = source->span(args->primID, line->origin, line->direction);
   if (s.empty() || s.exit < line->tmin || s.enter > line->tmax) return;
   line->out->push_back({source->first_id + args->primID, s.enter, s.exit});
+}
+
+// The exact spans of the triangle candidates, a run of one source at a time through the SIMD
+// batch (the same answers as GeometrySource::span, which tests compare it with).
+void span_triangles(const LineContext& line, std::vector<TriangleCandidate>& candidates) {
+  thread_local std::vector<uint32_t> ids;
+  thread_local TriangleSpanBatch batch;
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return a.source < b.source; });
+  for (size_t begin = 0; begin < candidates.size();) {
+    const GeometrySource& source = *candidates[begin].source;
+    size_t end = begin;
+    ids.clear();
+    while (end < candidates.size() && candidates[end].source == &source) {
+      ids.push_back(candidates[end++].primitive);
+    }
+    batch.gather({source.triangles, source.count}, ids);
+    batch.compute(line.origin, line.direction, source.shared_radius);
+    for (size_t k = 0; k < ids.size(); ++k) {
+      const Span s = batch.span(k);
+      if (s.empty() || s.exit < line.tmin || s.enter > line.tmax) continue;
+      line.out->push_back({source.first_id + ids[k], s.enter, s.exit});
+    }
+    begin = end;
+  }
 }
 
 // args->query is the world-space query; inside an instance the geometry is found by the
@@ -210,6 +251,9 @@ void intersect_line(RTCSceneTy* scene, const std::vector<GeometrySource>& source
   line.tmax = tmax;
   line.sources = &sources;
   line.out = &out;
+  thread_local std::vector<TriangleCandidate> candidates;
+  candidates.clear();
+  line.triangles = &candidates;
   // Embree starts at tnear >= 0: its float ray starts at tmin (less a slack that covers the
   // float rounding of the range), and the callbacks measure t from the exact origin.
   const double slack = 1e-5 * (std::abs(tmin) + (std::isfinite(tmax) ? std::abs(tmax) : 0.0) + 1.0);
@@ -229,6 +273,7 @@ void intersect_line(RTCSceneTy* scene, const std::vector<GeometrySource>& source
   rayhit.ray.flags = 0;
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene, &line.embree, &rayhit);
+  span_triangles(line, candidates);
 }
 
 void contain_point(RTCSceneTy* scene, const std::vector<GeometrySource>& sources, const Vec3& p,

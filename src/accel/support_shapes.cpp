@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 
 namespace convray::accel {
@@ -36,7 +37,7 @@ Span capsule_body_span(const Vec3& origin, const Vec3& direction, const Vec3& a,
   const Vec3 axis = b - a;
   const double length = glm::length(axis);
   if (length == 0.0) return {};
-  const Vec3 u = axis / length;
+  const Vec3 u = axis * (1.0 / length);  // as TriangleSpanBatch rounds it
   const Vec3 w = origin - a;
   const double dw = glm::dot(direction, u);
   const double ww = glm::dot(w, u);
@@ -82,20 +83,25 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
   return join(span, sphere_span(origin, direction, segment.b, radius));
 }
 
+bool triangle_may_cross(const Vec3& origin, const Vec3& direction,
+                        const field::Triangle& triangle, double radius) {
+  const Vec3 centroid = (triangle.a + triangle.b + triangle.c) / 3.0;
+  double reach2 = 0.0;
+  for (const Vec3& v : {triangle.a, triangle.b, triangle.c}) {
+    reach2 = std::max(reach2, glm::dot(v - centroid, v - centroid));
+  }
+  return !sphere_span(origin, direction, centroid, std::sqrt(reach2) + radius).empty();
+}
+
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius) {
   const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
-  // Cheap rejection: the ball around the centroid holding the triangle, grown by R.
-  const Vec3 centroid = (triangle.a + triangle.b + triangle.c) / 3.0;
-  double reach2 = 0.0;
-  for (const Vec3& v : vertex) reach2 = std::max(reach2, glm::dot(v - centroid, v - centroid));
-  const double reach = std::sqrt(reach2) + radius;
-  if (sphere_span(origin, direction, centroid, reach).empty()) return {};
+  if (!triangle_may_cross(origin, direction, triangle, radius)) return {};
   Vec3 n = triangle_normal(triangle);
   const double n_length = glm::length(n);
   Span span{};
   if (n_length > 0.0) {
-    n /= n_length;
+    n *= 1.0 / n_length;  // as TriangleSpanBatch rounds it
     // The slab |height| <= R holds the whole support: a cheap rejection first.
     const double h0 = glm::dot(origin - triangle.a, n);
     const double h1 = glm::dot(direction, n);

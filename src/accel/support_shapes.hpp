@@ -27,6 +27,10 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
 // the three edge capsules. Convex, so the union of their intervals is one interval.
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius);
+// A cheap test that the line may cross the triangle's support: it crosses the ball around the
+// centroid that holds the triangle, grown by R (false means the span is empty).
+bool triangle_may_cross(const Vec3& origin, const Vec3& direction,
+                        const field::Triangle& triangle, double radius);
 // Arc swept by a ball (a piece of a torus, not convex): a conservative interval, the ball
 // around the circle's centre of radius (arc radius + R) cut by the slab |height| <= R.
 Span arc_span(const Vec3& origin, const Vec3& direction, const field::Arc& arc, double radius);

@@ -130,17 +130,36 @@ ConvolutionSurface::Impl::Impl(const ConvolutionObject& object, SupportCache* ca
   }
   if (cache) take_prebuilt(sources, group_meshes, *cache);
   index = std::make_unique<accel::SupportIndex>(sources);
-  gather_in_chunks = spheres_only && expected_supports_per_line() > kChunkedSupportsPerLine;
+  gather_in_chunks = expected_supports_per_line() > kChunkedSupportsPerLine;
 }
 
 // Cauchy's formula: a convex body's mean shadow is a quarter of its surface area, so a random
-// line through the bounds crosses about 4 (sum of pi r^2) / area(bounds) balls.
+// line through the bounds crosses about (sum of support areas) / area(bounds) supports. A
+// support is the skeleton swept by a ball of radius r, whose area Steiner's formula gives: a
+// ball 4 pi r^2, a capsule 2 pi r L + 4 pi r^2, a triangle 2A + pi r P + 4 pi r^2 (perimeter
+// P); an arc (not convex) is counted as the capsule of its length.
 double ConvolutionSurface::Impl::expected_supports_per_line() const {
   const Vec3 e = index->bounds().extent();
   const double area = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
-  double shadows = 0.0;
-  for (double r : sphere_radii) shadows += kPi * r * r;
-  return area > 0.0 ? 4.0 * shadows / area : 0.0;
+  double supports = 0.0;
+  auto swept = [](double r, double length) { return 2.0 * kPi * r * length + 4.0 * kPi * r * r; };
+  for (double r : sphere_radii) supports += swept(r, 0.0);
+  for (size_t i = 0; i < capsules.size(); ++i) {
+    supports += swept(capsule_radii[i], glm::length(capsules[i].b - capsules[i].a));
+  }
+  for (size_t i = 0; i < arcs.size(); ++i) {
+    supports += swept(arc_radii[i], arcs[i].angle * arcs[i].radius);
+  }
+  for (const Group& g : groups) {
+    for (uint32_t i = g.first_triangle; i < g.end_triangle; ++i) {
+      const field::Triangle& t = triangles[i];
+      const double perimeter =
+          glm::length(t.b - t.a) + glm::length(t.c - t.b) + glm::length(t.a - t.c);
+      const double twice_area = glm::length(glm::cross(t.b - t.a, t.c - t.a));
+      supports += twice_area + kPi * g.radius * perimeter + 4.0 * kPi * g.radius * g.radius;
+    }
+  }
+  return area > 0.0 ? supports / area : 0.0;
 }
 
 namespace {

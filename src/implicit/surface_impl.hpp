@@ -44,15 +44,15 @@ struct ConvolutionSurface::Impl {
   double min_radius = 1.0;  // smallest support radius: the length scale of tolerances
   // Nothing but spheres: every ray goes straight to the sphere sweep (sphere_sweep.hpp).
   bool spheres_only = false;
-  // First-root searches gather the ray in chunks (surface_roots.cpp): set for spheres only
-  // (re-solving the supports that straddle a chunk's end costs little) and where a line
-  // through the bounds crosses enough supports that stopping early beats the extra traversals.
+  // First-root searches gather the ray in chunks (surface_roots.cpp), where a line through the
+  // bounds crosses enough supports that stopping early beats the extra traversals and the
+  // supports that straddle a chunk's end, gathered twice.
   bool gather_in_chunks = false;
   Tracer tracer = Tracer::fast;
   std::unique_ptr<accel::SupportIndex> index;  // built last, over the arrays above
 
   Impl(const ConvolutionObject& object, SupportCache* cache);
-  // How many sphere supports a random line through the bounds crosses, on average.
+  // How many supports a random line through the bounds crosses, on average.
   double expected_supports_per_line() const;
 
   const Group& group_of(uint32_t triangle) const {

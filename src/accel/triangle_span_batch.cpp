@@ -1,0 +1,150 @@
+#include "accel/triangle_span_batch.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace convray::accel {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Plain doubles, so that the lane loop vectorizes after inlining.
+struct P {
+  double x, y, z;
+};
+[[gnu::always_inline]] inline P sub(P a, P b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+[[gnu::always_inline]] inline P add(P a, P b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+[[gnu::always_inline]] inline P mul(P a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+[[gnu::always_inline]] inline double dot(P a, P b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+[[gnu::always_inline]] inline P cross(P a, P b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+// An interval being narrowed or joined; empty when !(enter <= exit). Every condition below is
+// a single comparison inside a select: the vectorizer turns those into blends, but not bools
+// combined with & or stored.
+struct Lane {
+  double enter, exit;
+};
+
+[[gnu::always_inline]] inline double least(double a, double b) { return b < a ? b : a; }
+[[gnu::always_inline]] inline double most(double a, double b) { return b > a ? b : a; }
+
+// Any empty interval as (+inf, -inf), which least/most then join as nothing.
+[[gnu::always_inline]] inline Lane normal(Lane s) {
+  return {s.enter <= s.exit ? s.enter : kInfinity, s.enter <= s.exit ? s.exit : -kInfinity};
+}
+
+// Narrows `span` to where g0 + t g1 >= 0 (support_shapes.cpp's clip_half_space).
+[[gnu::always_inline]] inline Lane clip(double g0, double g1, Lane span) {
+  const double t = -g0 / (g1 != 0.0 ? g1 : 1.0);
+  const double lower = g1 > 0.0 ? t : -kInfinity;  // the bound t gives, if any
+  const double upper = g1 < 0.0 ? t : kInfinity;
+  const double parallel_gap = g1 == 0.0 ? g0 : 0.0;  // < 0: the line is wholly outside
+  return {most(most(span.enter, lower), parallel_gap < 0.0 ? kInfinity : -kInfinity),
+          least(span.exit, upper)};
+}
+
+// Adds a normalized piece to the union.
+[[gnu::always_inline]] inline Lane join(Lane piece, Lane span) {
+  return {least(span.enter, piece.enter), most(span.exit, piece.exit)};
+}
+
+[[gnu::always_inline]] inline Lane ball(P o, P d, P center, double r2) {
+  const P w = sub(o, center);
+  const double tc = -dot(w, d);
+  const P closest = add(w, mul(d, tc));
+  const double q2 = dot(closest, closest);
+  const double half = std::sqrt(q2 <= r2 ? r2 - q2 : 0.0);
+  return {q2 <= r2 ? tc - half : kInfinity, q2 <= r2 ? tc + half : -kInfinity};
+}
+
+// Points within R of the edge's line whose projection lies on the edge (support_shapes.cpp's
+// capsule_body_span).
+[[gnu::always_inline]] inline Lane capsule_body(P o, P d, P a, P b, double r2) {
+  const P axis = sub(b, a);
+  const double length = std::sqrt(dot(axis, axis));
+  const P u = mul(axis, 1.0 / (length > 0.0 ? length : 1.0));
+  const P w = sub(o, a);
+  const double dw = dot(d, u), ww = dot(w, u);
+  const P dp = sub(d, mul(u, dw));
+  const P wp = sub(w, mul(u, ww));
+  const double dp2 = dot(dp, dp);
+  const double safe = dp2 > 0.0 ? dp2 : 1.0;
+  const double tc = -dot(wp, dp) / safe;
+  const P closest = add(wp, mul(dp, tc));
+  // Parallel to the axis (dp2 = 0): the whole line, or nothing, by its distance to the axis.
+  const double q2 = dp2 > 0.0 ? dot(closest, closest) : dot(wp, wp);
+  const double half = std::sqrt(q2 <= r2 ? (r2 - q2) / safe : 0.0);
+  Lane span{dp2 > 0.0 ? tc - half : -kInfinity, dp2 > 0.0 ? tc + half : kInfinity};
+  span = clip(ww, dw, span);
+  span = clip(length - ww, -dw, span);
+  const double miss = q2 <= r2 ? length : 0.0;  // 0: too far from the axis, or no edge
+  return normal({miss > 0.0 ? span.enter : kInfinity, miss > 0.0 ? span.exit : -kInfinity});
+}
+
+// The prism over the triangle, |height| <= R (empty for a zero-area triangle).
+[[gnu::always_inline]] inline Lane prism(P o, P d, P a, P b, P c, double radius) {
+  const P n0 = cross(sub(b, a), sub(c, a));
+  const double n_length = std::sqrt(dot(n0, n0));
+  const P n = mul(n0, 1.0 / (n_length > 0.0 ? n_length : 1.0));
+  Lane span{-kInfinity, kInfinity};
+  const double h0 = dot(sub(o, a), n), h1 = dot(d, n);
+  span = clip(radius - h0, -h1, span);
+  span = clip(radius + h0, h1, span);
+  // Written out: the vectorizer takes no inner loops.
+  const P in_ab = cross(n, sub(b, a)), in_bc = cross(n, sub(c, b)), in_ca = cross(n, sub(a, c));
+  span = clip(dot(sub(o, a), in_ab), dot(d, in_ab), span);
+  span = clip(dot(sub(o, b), in_bc), dot(d, in_bc), span);
+  span = clip(dot(sub(o, c), in_ca), dot(d, in_ca), span);
+  return normal({n_length > 0.0 ? span.enter : kInfinity, n_length > 0.0 ? span.exit : -kInfinity});
+}
+
+}  // namespace
+
+void TriangleSpanBatch::gather(std::span<const field::Triangle> triangles,
+                               std::span<const uint32_t> ids) {
+  const size_t n = ids.size();
+  for (auto& vertex : corner_) {
+    for (auto& axis : vertex) axis.resize(n);
+  }
+  enter_.resize(n);
+  exit_.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    const field::Triangle& t = triangles[ids[k]];
+    const Vec3* v[3] = {&t.a, &t.b, &t.c};
+    for (int i = 0; i < 3; ++i) {
+      corner_[i][0][k] = v[i]->x;
+      corner_[i][1][k] = v[i]->y;
+      corner_[i][2][k] = v[i]->z;
+    }
+  }
+}
+
+void TriangleSpanBatch::compute(const Vec3& origin, const Vec3& direction, double radius) {
+  const P o{origin.x, origin.y, origin.z}, d{direction.x, direction.y, direction.z};
+  const double r2 = radius * radius;
+  // Named pointers: the vectorizer does not see through an array of them.
+  const double *ax = corner_[0][0].data(), *ay = corner_[0][1].data(), *az = corner_[0][2].data();
+  const double *bx = corner_[1][0].data(), *by = corner_[1][1].data(), *bz = corner_[1][2].data();
+  const double *cx = corner_[2][0].data(), *cy = corner_[2][1].data(), *cz = corner_[2][2].data();
+  double* enter = enter_.data();
+  double* exit = exit_.data();
+  const size_t n = size();
+#pragma GCC ivdep  // (omp simd would not vectorize the P aggregates with GCC 12)
+  for (size_t k = 0; k < n; ++k) {
+    const P a{ax[k], ay[k], az[k]}, b{bx[k], by[k], bz[k]}, e{cx[k], cy[k], cz[k]};
+    Lane span{kInfinity, -kInfinity};
+    span = join(prism(o, d, a, b, e, radius), span);
+    span = join(capsule_body(o, d, a, b, r2), span);
+    span = join(capsule_body(o, d, b, e, r2), span);
+    span = join(capsule_body(o, d, e, a, r2), span);
+    span = join(ball(o, d, a, r2), span);
+    span = join(ball(o, d, b, r2), span);
+    span = join(ball(o, d, e, r2), span);
+    enter[k] = span.enter;
+    exit[k] = span.exit;
+  }
+}
+
+}  // namespace convray::accel

@@ -1,0 +1,32 @@
+#pragma once
+// Exact spans of many triangles' supports along one line at once: SIMD lanes over triangles,
+// branch-free, for the line queries of SupportIndex (whose Embree callbacks only collect the
+// triangles whose support box the line crosses). The same mathematics as triangle_span in
+// support_shapes.hpp, the scalar twin the tests compare this with: the prism over the triangle
+// (|height| <= R) joined to the three edge capsules' bodies and the three corner balls.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "accel/support_shapes.hpp"
+#include "field/triangle.hpp"
+
+namespace convray::accel {
+
+class TriangleSpanBatch {
+ public:
+  // Gathers triangles[ids[k]] into the lanes (the storage is reused from call to call).
+  void gather(std::span<const field::Triangle> triangles, std::span<const uint32_t> ids);
+  // spans[k] for the k-th gathered triangle; an empty support crossing gives an empty Span.
+  // `direction` is of unit length.
+  void compute(const Vec3& origin, const Vec3& direction, double radius);
+
+  size_t size() const { return enter_.size(); }
+  Span span(size_t k) const { return {enter_[k], exit_[k]}; }
+
+ private:
+  std::vector<double> corner_[3][3];  // corner_[vertex][axis]
+  std::vector<double> enter_, exit_;
+};
+
+}  // namespace convray::accel
