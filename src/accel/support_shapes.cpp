@@ -85,12 +85,15 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
 
 bool triangle_may_cross(const Vec3& origin, const Vec3& direction,
                         const field::Triangle& triangle, double radius) {
-  const Vec3 centroid = (triangle.a + triangle.b + triangle.c) / 3.0;
-  double reach2 = 0.0;
-  for (const Vec3& v : {triangle.a, triangle.b, triangle.c}) {
-    reach2 = std::max(reach2, glm::dot(v - centroid, v - centroid));
-  }
-  return !sphere_span(origin, direction, centroid, std::sqrt(reach2) + radius).empty();
+  const Vec3 centroid = (triangle.a + triangle.b + triangle.c) * (1.0 / 3.0);
+  const double reach2 = std::max({glm::dot(triangle.a - centroid, triangle.a - centroid),
+                                  glm::dot(triangle.b - centroid, triangle.b - centroid),
+                                  glm::dot(triangle.c - centroid, triangle.c - centroid)});
+  // The squared distance from the centroid to the line against (reach + R)^2, bounded by
+  // 2 reach^2 + 2 R^2 so that no square root is taken: a looser ball, still a sure rejection.
+  const Vec3 w = origin - centroid;
+  const double along = glm::dot(w, direction);
+  return glm::dot(w, w) - along * along <= 2.0 * (reach2 + radius * radius);
 }
 
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,

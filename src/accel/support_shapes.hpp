@@ -27,8 +27,9 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
 // the three edge capsules. Convex, so the union of their intervals is one interval.
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius);
-// A cheap test that the line may cross the triangle's support: it crosses the ball around the
-// centroid that holds the triangle, grown by R (false means the span is empty).
+// A cheap test that the line may cross the triangle's support: it crosses a ball around the
+// centroid that holds the support (false means the span is empty). No square root: the
+// Embree callbacks run it on every triangle whose box the line crosses.
 bool triangle_may_cross(const Vec3& origin, const Vec3& direction,
                         const field::Triangle& triangle, double radius);
 // Arc swept by a ball (a piece of a torus, not convex): a conservative interval, the ball
