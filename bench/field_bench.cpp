@@ -83,6 +83,19 @@ void batch_field(benchmark::State& state, bool clipped) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(tris.size()));
 }
 
+// The window march's calls: a few listed lanes (8 of a cluster's 32 triangles) per call, as
+// one sample of a ray's cluster evaluates the triangles whose support holds the point.
+void batch_field_listed8(benchmark::State& state, bool clipped) {
+  auto tris = make_triangles(clipped);
+  tris.resize(32);
+  const convray::field::TriangleBatch batch(tris);
+  const double r = radius_for(clipped);
+  std::vector<uint32_t> lanes;
+  for (uint32_t i = 0; i < tris.size(); i += 4) lanes.push_back(i);
+  for (auto _ : state) benchmark::DoNotOptimize(batch.field(Vec3(0.0), r, lanes));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(lanes.size()));
+}
+
 std::vector<convray::field::Segment> make_segments() {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -117,6 +130,8 @@ BENCHMARK_CAPTURE(scalar_field, wholly_inside, false);
 BENCHMARK_CAPTURE(scalar_field, clipped, true);
 BENCHMARK_CAPTURE(batch_field, wholly_inside, false);
 BENCHMARK_CAPTURE(batch_field, clipped, true);
+BENCHMARK_CAPTURE(batch_field_listed8, wholly_inside, false);
+BENCHMARK_CAPTURE(batch_field_listed8, clipped, true);
 BENCHMARK(segment_value);
 BENCHMARK(segment_batch_value);
 

@@ -205,6 +205,26 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
   return any_pie != 0;
 }
 
+// Whether every corner of the chunk's triangles lies within R of p: a cheap look before the
+// lean path, which would otherwise compute every edge term to find out (the window march
+// hands over mostly clipped triangles, its wholly inside ones being summed as quartics).
+template <class Index>
+bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t base, size_t lanes,
+                                   Index index, const EdgeView* views) const {
+  const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];
+  int outside = 0;
+#pragma omp simd reduction(| : outside)
+  for (size_t t = 0; t < lanes; ++t) {
+    const size_t i = index(base + t);
+    auto beyond = [&](const EdgeView& v) {
+      const double dx = v.vx[i] - p.x, dy = v.vy[i] - p.y, dz = v.vz[i] - p.z;
+      return int(dx * dx + dy * dy + dz * dz >= r2);
+    };
+    outside |= beyond(v0) | beyond(v1) | beyond(v2);
+  }
+  return outside == 0;
+}
+
 // The lean path, tried optimistically: assuming every triangle of the chunk lies inside the
 // support sphere, nothing is clipped and each lane's value is its three inside parts. The
 // same pass checks the assumption (every corner within R); if it fails, nothing is added
@@ -262,7 +282,7 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
     // The lean path while chunks keep being wholly inside the support sphere (large radii);
     // after one that is not, the general path, until a chunk without pie slices suggests
     // trying again.
-    if (try_lean && !acc.per_triangle &&
+    if (try_lean && !acc.per_triangle && corners_within(p, r2, base, lanes, index, views) &&
         accumulate_wholly_inside<kGradient>(p, r2, inv_norm, base, lanes, index, views, acc)) {
       continue;
     }

@@ -48,6 +48,9 @@ class TriangleBatch {
   template <bool kGradient, class Index>
   void evaluate(const Vec3& p, double radius, size_t count, Index index,
                 Accumulator& acc) const;
+  template <class Index>
+  bool corners_within(const Vec3& p, double r2, size_t base, size_t lanes, Index index,
+                      const detail::EdgeView* views) const;
   template <bool kGradient, class Index>
   bool accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm, size_t base,
                                 size_t lanes, Index index, const detail::EdgeView* views,
