@@ -260,6 +260,7 @@ class Marcher {
  private:
   bool bracket(const Sample& a, const Sample& b);
   bool search_window(const Sample& a, const Sample& b);
+  double certified_reach(const Sample& a, double to, double min_step, double max_step) const;
 
   const Impl& s_;
   ClusterField& field_;
@@ -298,16 +299,31 @@ bool Marcher::search_window(const Sample& a, const Sample& b) {
   return search_window(mid, b);
 }
 
+// How far from a the one-sided envelope certifies that F stays on a's side of T, up to
+// max_step. The curvature bound sums the primitives whose support meets the window, so a
+// short window has a smaller bound than a long one: windows double from min_step while the
+// whole window is certified, and the step is the last certified length (a bound over a
+// window holds over any part of it).
+double Marcher::certified_reach(const Sample& a, double to, double min_step,
+                                double max_step) const {
+  double best = 0.0;
+  for (double window = min_step;; window = std::min(2.0 * window, max_step)) {
+    const double step = certified_step(a, field_.curvature(a.t, std::min(to, a.t + window)));
+    if (step < window) return std::max(best, step);
+    best = window;
+    if (window >= max_step || a.t + window >= to) return best;
+  }
+}
+
 bool Marcher::march(double from, double to) {
   const double min_step = kMinStep * s_.min_radius, max_step = kMaxStep * s_.min_radius;
   Sample a = field_.sample(from);
   if (a.g == 0.0 && bracket(a, a)) return true;
   while (a.t < to) {
     ++stats_.fits;
-    const double curvature = field_.curvature(a.t, std::min(to, a.t + max_step));
-    double step = certified_step(a, curvature);
-    const bool certified = step >= min_step;
-    step = std::clamp(step, min_step, max_step);
+    const double certified_length = certified_reach(a, to, min_step, max_step);
+    const bool certified = certified_length >= min_step;
+    const double step = std::clamp(certified_length, min_step, max_step);
     const Sample b = field_.sample(std::min(to, a.t + step));
     if ((a.g < 0.0) != (b.g < 0.0)) {
       if (bracket(a, b)) return true;
