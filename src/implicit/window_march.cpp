@@ -17,6 +17,13 @@ using Impl = ConvolutionSurface::Impl;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // |K''| <= 8 / R^2 for K(r) = (1 - r^2/R^2)^2 along any line (see the header).
 constexpr double kKernelCurvature = 8.0;
+// A triangle's |F''| along a line is at most the integral of |u.H.u| over its part of the
+// kernel's ball, H the kernel's Hessian: with s = |x|^2/R^2, u.H.u = -4(1-s)/R^2 + 8(u.x)^2/R^4
+// lies in [-4(1-s), 12s - 4]/R^2, and over the disk where the triangle's plane meets the ball
+// (area element pi R^2 ds) the integral of max(4 - 4s, 12s - 4)/R^2 is at most 4 pi (at height
+// 0). Pointwise the bound is 8/R^2, so a triangle contributes min(8 area/R^2, 4 pi): half the
+// old 8/R^2 min(area, pi R^2) for triangles wider than the ball.
+constexpr double kPlaneCurvature = 4.0 * kPi;
 // Distance kernels of a segment (POV-Ray's blob cylinders): K(u) with u = d^2 the squared
 // distance to a convex set, 0 <= u'' <= 2 and |u'| <= 2d, so |K''| <= |K_uu| u'^2 + |K_u| u''
 // <= (2/R^4)(4R^2) + (2/R^2) 2 = 12 / R^2.
@@ -360,7 +367,7 @@ double curvature_bound(const Impl& s, uint32_t id) {
   const field::Triangle& tri = s.triangles[triangle];
   const double area = 0.5 * glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a));
   const double r = g.radius;
-  return std::abs(g.strength) * kKernelCurvature * std::min(area, kPi * r * r) / (r * r);
+  return std::abs(g.strength) * std::min(kKernelCurvature * area / (r * r), kPlaneCurvature);
 }
 
 void march_cluster(const Impl& surface, const Ray& ray,

@@ -14,7 +14,8 @@
 // A sign change between samples brackets a root, which is refined on the exact field
 // (bracket_refine.hpp). The bound on |F''| follows from the kernel K(r) = (1 - r^2/R^2)^2,
 // whose second derivative along any line is at most 8/R^2 in size: a triangle contributes at
-// most 8/R^2 times its area within the ball (at most pi R^2), a segment 8/R^2 times its length
+// most 8/R^2 times its area, and at most 4 pi (the Hessian integrated over the disk where its
+// plane meets the ball; window_march.cpp), a segment 8/R^2 times its length
 // within it (at most 2R), a point 8/R^2 (curvature_bound).
 //
 // Windows narrower than 10^-3 of the smallest radius are not halved further: there the field
