@@ -4,6 +4,8 @@
 #include <cstdio>
 
 #include "app/short_number.hpp"
+#include "app/soup_triangles.hpp"
+#include "implicit/repeated_triangles.hpp"
 #include "mesh/load.hpp"
 #include "mesh/self_intersections.hpp"
 #include "mesh/skeleton_stats.hpp"
@@ -79,6 +81,10 @@ void print_report(const std::string& path, const mesh::LoadedMesh& mesh, const m
       << "points: " << skeleton.points << "\n"
       << "vertices: " << stats.vertices << " (distinct positions)\n";
   print_faces(mesh.report, out);
+  if (stats.triangles > 0) {
+    out << "repeated triangles: " << implicit::repeated_triangle_count(soup_triangles(mesh.soup))
+        << " (copies of another face's three corners; a render sums each once, times its count)\n";
+  }
   print_lines(mesh.report, out);
   out << "bounding box min: " << triple(skeleton.bounds.lo) << "\n"
       << "bounding box max: " << triple(skeleton.bounds.hi) << "\n"

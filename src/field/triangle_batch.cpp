@@ -18,6 +18,11 @@ struct TriangleBatch::Accumulator {
 
 TriangleBatch::TriangleBatch(std::span<const Triangle> triangles) { assign(triangles); }
 
+TriangleBatch::TriangleBatch(std::span<const Triangle> triangles, std::span<const double> weights) {
+  assign(triangles);
+  for (size_t i = 0; i < weight_.size() && i < weights.size(); ++i) weight_[i] *= weights[i];
+}
+
 void TriangleBatch::assign(std::span<const Triangle> triangles) {
   const size_t n = triangles.size();
   for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->assign(n, 0.0);
@@ -233,7 +238,7 @@ template <bool kGradient, class Index>
 bool TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm,
                                              size_t base, size_t lanes, Index index,
                                              const EdgeView* views, Accumulator& acc) const {
-  const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data();
+  const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
   double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
   int outside = 0;
@@ -248,14 +253,15 @@ bool TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double in
     const EdgeTerm e2 = detail::edge_term<kGradient, true>(v2, i, p, r0sq, 0.0);
     outside |= int(e0.corner_dist2 >= r2) | int(e1.corner_dist2 >= r2) |
                int(e2.corner_dist2 >= r2);
-    // No weight needed: a zero-area lane has all-zero edge data, so d = 0 and every term
-    // below is exactly 0 (only the general path's whole-disk case needs the weight).
-    sum += e0.inside + e1.inside + e2.inside;
+    // The weight: a repeated triangle's multiplicity (a zero-area lane has all-zero edge
+    // data, so its terms are exactly 0 whatever its weight).
+    const double w = ws[i];
+    sum += w * (e0.inside + e1.inside + e2.inside);
     if constexpr (kGradient) {
       const double dn = -2.0 * h * (e0.inside_dr0 + e1.inside_dr0 + e2.inside_dr0);
-      sgx += e0.gx + e1.gx + e2.gx + dn * nx;
-      sgy += e0.gy + e1.gy + e2.gy + dn * ny;
-      sgz += e0.gz + e1.gz + e2.gz + dn * nz;
+      sgx += w * (e0.gx + e1.gx + e2.gx + dn * nx);
+      sgy += w * (e0.gy + e1.gy + e2.gy + dn * ny);
+      sgz += w * (e0.gz + e1.gz + e2.gz + dn * nz);
     }
   }
   if (outside) return false;

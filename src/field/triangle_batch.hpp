@@ -21,6 +21,8 @@ class TriangleBatch {
  public:
   TriangleBatch() = default;
   explicit TriangleBatch(std::span<const Triangle> triangles);
+  // Each triangle's field times its weight (a repeated triangle's multiplicity).
+  TriangleBatch(std::span<const Triangle> triangles, std::span<const double> weights);
   // Replaces the triangles, reusing the arrays' storage (for small batches built per query).
   void assign(std::span<const Triangle> triangles);
 
@@ -63,7 +65,7 @@ class TriangleBatch {
                  Index index, const detail::EdgeView* views, detail::ChunkState& st) const;
 
   std::vector<double> nx_, ny_, nz_;  // unit normal (zero for zero-area triangles)
-  std::vector<double> weight_;        // 1, or 0 for zero-area triangles
+  std::vector<double> weight_;        // the triangle's weight (1 unless given), 0 for zero area
   EdgeArrays edges_[3];
 };
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "implicit/reference_tracer.hpp"
+#include "implicit/repeated_triangles.hpp"
 #include "implicit/support_cache.hpp"
 #include "implicit/surface_impl.hpp"
 #include "implicit/surface_roots.hpp"
@@ -30,13 +31,14 @@ bool has_source(const MeshComponent& m) {
   return m.source && m.source->local && m.source->local->size() == m.triangles.size();
 }
 
-// Mesh groups whose component has a source take their hierarchy from the cache.
+// Mesh groups whose component has a source take their hierarchy from the cache (null: a
+// group of merged repeated triangles, which builds its own).
 void take_prebuilt(accel::SupportSources& sources,
                    const std::vector<const MeshComponent*>& group_meshes, SupportCache& cache) {
   const Box3 index_bounds = accel::support_bounds(sources);
   for (size_t g = 0; g < group_meshes.size(); ++g) {
+    if (!group_meshes[g] || !has_source(*group_meshes[g])) continue;
     const MeshComponent& mesh = *group_meshes[g];
-    if (!has_source(mesh)) continue;
     auto& group = sources.triangle_groups[g];
     const SupportCache::Placed placed =
         cache.acquire(*mesh.source, group.triangles, group.radius, index_bounds);
@@ -96,11 +98,33 @@ ConvolutionSurface::Impl::Impl(const ConvolutionObject& object, SupportCache* ca
   for (const MeshComponent& m : object.meshes) {
     if (m.triangles.empty()) continue;
     note(m.weight, "mesh");
-    const auto first = uint32_t(triangles.size());
-    triangles.insert(triangles.end(), m.triangles.begin(), m.triangles.end());
-    groups.push_back({first, uint32_t(triangles.size()), m.weight.radius, m.weight.strength,
-                      uint32_t(&m - object.meshes.data())});
-    group_meshes.push_back(&m);
+    const auto mesh = uint32_t(&m - object.meshes.data());
+    const std::optional<DistinctTriangles> merged = merge_repeated(m.triangles);
+    if (!merged) {
+      const auto first = uint32_t(triangles.size());
+      triangles.insert(triangles.end(), m.triangles.begin(), m.triangles.end());
+      groups.push_back({first, uint32_t(triangles.size()), m.weight.radius, m.weight.strength,
+                        mesh});
+      group_meshes.push_back(&m);
+      continue;
+    }
+    // Repeated triangles: each distinct one once, in a group per multiplicity k whose strength
+    // is k times the mesh's (the same sum). Such groups no longer match the file's triangles
+    // one for one, so they build their own hierarchy instead of taking the cache's.
+    merged_triangles += m.triangles.size() - merged->triangles.size();
+    std::vector<uint32_t> multiplicities = merged->multiplicity;
+    std::sort(multiplicities.begin(), multiplicities.end());
+    multiplicities.erase(std::unique(multiplicities.begin(), multiplicities.end()),
+                         multiplicities.end());
+    for (const uint32_t k : multiplicities) {
+      const auto first = uint32_t(triangles.size());
+      for (size_t i = 0; i < merged->triangles.size(); ++i) {
+        if (merged->multiplicity[i] == k) triangles.push_back(merged->triangles[i]);
+      }
+      groups.push_back({first, uint32_t(triangles.size()), m.weight.radius,
+                        k * m.weight.strength, mesh});
+      group_meshes.push_back(nullptr);
+    }
   }
   if (!std::isfinite(min_radius)) min_radius = 1.0;  // an empty object
 
@@ -186,6 +210,8 @@ double ConvolutionSurface::threshold() const { return impl_->threshold; }
 Tracer ConvolutionSurface::tracer() const { return impl_->tracer; }
 Box3 ConvolutionSurface::bounds() const { return impl_->index->bounds(); }
 size_t ConvolutionSurface::primitive_count() const { return impl_->index->size(); }
+
+size_t ConvolutionSurface::merged_triangle_count() const { return impl_->merged_triangles; }
 
 size_t ConvolutionSurface::memory_bytes() const {
   const Impl& m = *impl_;

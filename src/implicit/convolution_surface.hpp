@@ -32,6 +32,9 @@ class ConvolutionSurface {
   // Union of the primitives' supports (primitive grown by its radius): F = 0 outside.
   Box3 bounds() const;
   size_t primitive_count() const;
+  // Mesh triangles left out as exact repeats: each distinct triangle is summed once with its
+  // multiplicity (repeated_triangles.hpp).
+  size_t merged_triangle_count() const;
   // Bytes held by the primitives and the acceleration structure.
   size_t memory_bytes() const;
 

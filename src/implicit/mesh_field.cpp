@@ -20,9 +20,26 @@ std::vector<Box3> support_boxes(std::span<const field::Triangle> triangles, doub
 }
 }  // namespace
 
+// Exactly repeated triangles are kept once, weighted by how often they occur (issue 17).
+MeshField::Distinct MeshField::distinct(std::vector<field::Triangle> triangles) {
+  std::optional<DistinctTriangles> merged = merge_repeated(triangles);
+  if (!merged) {
+    const size_t n = triangles.size();
+    return {std::move(triangles), std::vector<double>(n, 1.0), n};
+  }
+  return {std::move(merged->triangles),
+          std::vector<double>(merged->multiplicity.begin(), merged->multiplicity.end()),
+          triangles.size()};
+}
+
 MeshField::MeshField(std::vector<field::Triangle> triangles, double radius, double strength)
-    : triangles_(std::move(triangles)),
-      batch_(triangles_),
+    : MeshField(distinct(std::move(triangles)), radius, strength) {}
+
+MeshField::MeshField(Distinct distinct, double radius, double strength)
+    : triangles_(std::move(distinct.triangles)),
+      weights_(std::move(distinct.weights)),
+      total_(distinct.total),
+      batch_(triangles_, weights_),
       grid_(support_boxes(triangles_, radius), radius),
       radius_(radius),
       strength_(strength) {
@@ -67,7 +84,9 @@ field::FieldSample MeshField::field(const Vec3& p) const {
 
 field::FieldSample MeshField::field_exact(const Vec3& p) const {
   field::FieldSample sum;
-  for (uint32_t i : grid_.candidates(p)) sum += field::triangle_field(p, triangles_[i], radius_);
+  for (uint32_t i : grid_.candidates(p)) {
+    sum += field::triangle_field(p, triangles_[i], radius_) * weights_[i];
+  }
   return sum * strength_;
 }
 

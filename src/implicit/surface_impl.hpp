@@ -35,6 +35,9 @@ struct ConvolutionSurface::Impl {
     uint32_t mesh = 0;  // the mesh component's index in ConvolutionObject::meshes
   };
   std::vector<Group> groups;
+  // Triangles left out as exact repeats of another of their mesh (repeated_triangles.hpp):
+  // their multiplicity is in their group's strength.
+  size_t merged_triangles = 0;
 
   uint32_t capsule_base = 0, arc_base = 0, triangle_base = 0;
   // Spheres are the points, then the blob spheres; capsules the segments, then the blob
