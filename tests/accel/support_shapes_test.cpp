@@ -6,19 +6,13 @@
 #include <random>
 
 #include "accel/support_shapes.hpp"
+#include "reference/random_vectors.hpp"
 
 namespace convray::accel {
 namespace {
 
-Vec3 random_point(std::mt19937_64& rng, double scale) {
-  std::uniform_real_distribution<double> u(-scale, scale);
-  return {u(rng), u(rng), u(rng)};
-}
-
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> n;
-  return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
-}
+using testing::random_point;
+using testing::random_unit;
 
 field::Arc random_arc(std::mt19937_64& rng) {
   field::Arc arc;
