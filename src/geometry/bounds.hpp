@@ -44,6 +44,14 @@ inline bool contains(const Box3& box, const Vec3& p) {
 // sides stay infinite along every axis they reach; zero matrix entries never make 0 * inf.
 Box3 transform_box(const scene::Transform& transform, const Box3& box);
 
+// `box` grown by a tiny fraction of its size (and a little absolutely), so that rounding in
+// the boxes put into a hierarchy never culls a grazing hit or a point on a boundary.
+inline Box3 padded(const Box3& box) {
+  constexpr double kPadding = 1e-9;
+  const Vec3 margin = kPadding * (box.hi - box.lo + glm::abs(box.lo) + glm::abs(box.hi)) + 1e-300;
+  return Box3{box.lo - margin, box.hi + margin};
+}
+
 // Narrows [tmin, tmax] to where ray.at(t) lies in `box`; false when nothing is left. Works
 // for any direction length and for infinite boxes.
 using implicit::clip_to_box;

@@ -46,7 +46,13 @@ class ShapeBuilder {
  public:
   ShapeBuilder(implicit::SupportCache* cache, implicit::Tracer tracer)
       : cache_(cache), tracer_(tracer) {}
-  ShapePtr build(const scene::Object& object, const Inherited& parent);
+  // `placement` follows the object's own transform (a split union's, when it is a member).
+  ShapePtr build(const scene::Object& object, const Inherited& parent,
+                 const scene::Transform& placement = {});
+  // The object's shapes for the scene's hierarchy: a union that may be split gives its
+  // members (recursively), each placed and textured as inside the union; anything else one.
+  void split(const scene::Object& object, const Inherited& parent,
+             const scene::Transform& placement, std::vector<ShapePtr>& out);
 
  private:
   ShapePtr build_primitive(const scene::Object& object, const Inherited& own);
@@ -71,13 +77,31 @@ class ShapeBuilder {
       std::make_shared<const scene::Texture>(scene::default_texture());
   implicit::SupportCache* cache_;  // for convolution objects' meshes; may be null
   implicit::Tracer tracer_;        // how quartic-kernel convolution surfaces are traced
+  // The last surface made: the members of a union mostly share one (memory for 10^6 members).
+  mutable SurfaceInfoPtr last_surface_;
 };
 
+// Inherited state after `object`: its own texture and interior, else its parent's.
+Inherited inherit(const scene::Object& object, const Inherited& parent) {
+  Inherited own;
+  own.texture = object.texture ? object.texture : parent.texture;
+  own.interior = object.interior ? object.interior : parent.interior;
+  own.no_shadow = object.no_shadow || parent.no_shadow;
+  return own;
+}
+
 SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
+  const scene::TexturePtr& texture = own.texture ? own.texture : default_texture_;
+  const scene::Interior interior = own.interior.value_or(scene::Interior{});
+  if (last_surface_ && last_surface_->texture == texture &&
+      last_surface_->interior.ior == interior.ior && last_surface_->no_shadow == own.no_shadow) {
+    return last_surface_;
+  }
   auto info = std::make_shared<SurfaceInfo>();
-  info->texture = own.texture ? own.texture : default_texture_;
-  info->interior = own.interior.value_or(scene::Interior{});
+  info->texture = texture;
+  info->interior = interior;
   info->no_shadow = own.no_shadow;
+  last_surface_ = info;
   return info;
 }
 
@@ -203,12 +227,63 @@ ShapePtr ShapeBuilder::build_primitive(const scene::Object& object, const Inheri
   }
 }
 
-ShapePtr ShapeBuilder::build(const scene::Object& object, const Inherited& parent) {
-  Inherited own;
-  own.texture = object.texture ? object.texture : parent.texture;
-  own.interior = object.interior ? object.interior : parent.interior;
-  own.no_shadow = object.no_shadow || parent.no_shadow;
+// POV-Ray's split_union: a union's members go into the scene's hierarchy as if each stood
+// alone, unless the union says `split_union off` or its inside is used as a whole (inverse,
+// clipped_by) or a bounded_by asks for it to be one object. Every crossing of a union is a
+// crossing of a member, so nothing seen changes; only the hierarchy gets the members' boxes.
+bool splits(const scene::Object& object) {
+  const auto* csg = std::get_if<scene::Csg>(&object.shape);
+  return csg && csg->operation == scene::CsgOperation::union_ && object.split_union &&
+         !object.inverse && object.clipped_by.empty() && !object.bounded_by &&
+         !object.unsupported;
+}
 
+void ShapeBuilder::split(const scene::Object& object, const Inherited& parent,
+                         const scene::Transform& placement, std::vector<ShapePtr>& out) {
+  if (!splits(object)) {
+    out.push_back(build(object, parent, placement));
+    return;
+  }
+  const Inherited own = inherit(object, parent);
+  const scene::Transform members_placement = object.transform.then(placement);
+  for (const scene::ObjectPtr& child : std::get<scene::Csg>(object.shape).children) {
+    if (child) split(*child, own, members_placement, out);
+  }
+}
+
+// A sphere under a similarity (translations, rotations, uniform scales) is a sphere: placed
+// directly, it costs a ray what a sphere written in place costs, as in POV-Ray (unions of
+// spheres moved by the union's `translate` are the usual case). Only without clipped_by and
+// bounded_by, which live in the sphere's own space.
+std::optional<scene::Sphere> sphere_in_place(const scene::Object& object,
+                                             const scene::Transform& transform) {
+  const auto* sphere = std::get_if<scene::Sphere>(&object.shape);
+  if (!sphere || !object.clipped_by.empty() || object.bounded_by || transform.is_identity() ||
+      !transform.is_similarity()) {
+    return std::nullopt;
+  }
+  return scene::Sphere{transform.point(sphere->center), sphere->radius * transform.uniform_scale()};
+}
+
+ShapePtr ShapeBuilder::build(const scene::Object& object, const Inherited& parent,
+                             const scene::Transform& placement) {
+  const Inherited own = inherit(object, parent);
+  const scene::Transform transform =
+      placement.is_identity() ? object.transform : object.transform.then(placement);
+  if (!transform.is_identity()) {
+    const double det = glm::determinant(glm::dmat3(transform.forward()));
+    const double inverse_det = glm::determinant(glm::dmat3(transform.backward()));
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det) || !std::isfinite(inverse_det)) {
+      throw InputError(object.loc, "the object's transform is singular (a scale by zero?)");
+    }
+  }
+  if (const auto sphere = sphere_in_place(object, transform)) {
+    scene::Object placed = object;
+    placed.shape = *sphere;
+    ShapePtr shape = build_primitive(placed, own);
+    if (object.inverse) shape = std::make_unique<InvertedShape>(std::move(shape));
+    return shape;
+  }
   ShapePtr shape = build_primitive(object, own);
   if (object.inverse) shape = std::make_unique<InvertedShape>(std::move(shape));
   // Clipping and bounding objects live in the object's own space and move with it.
@@ -223,13 +298,8 @@ ShapePtr ShapeBuilder::build(const scene::Object& object, const Inherited& paren
     const ShapePtr bound = build(*object.bounded_by, own);
     shape = std::make_unique<BoundedShape>(std::move(shape), *bound);
   }
-  if (!object.transform.is_identity()) {
-    const double det = glm::determinant(glm::dmat3(object.transform.forward()));
-    const double inverse_det = glm::determinant(glm::dmat3(object.transform.backward()));
-    if (!(std::abs(det) > 0.0) || !std::isfinite(det) || !std::isfinite(inverse_det)) {
-      throw InputError(object.loc, "the object's transform is singular (a scale by zero?)");
-    }
-    shape = std::make_unique<TransformedShape>(std::move(shape), object.transform);
+  if (!transform.is_identity()) {
+    shape = std::make_unique<TransformedShape>(std::move(shape), transform);
   }
   return shape;
 }
@@ -240,6 +310,12 @@ ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache,
                      implicit::Tracer tracer) {
   ShapeBuilder builder(cache, tracer);
   return builder.build(object, Inherited{});
+}
+
+void build_split_shapes(const scene::Object& object, std::vector<ShapePtr>& out,
+                        implicit::SupportCache* cache, implicit::Tracer tracer) {
+  ShapeBuilder builder(cache, tracer);
+  builder.split(object, Inherited{}, scene::Transform{}, out);
 }
 
 }  // namespace convray::geometry

@@ -1,8 +1,9 @@
 #pragma once
-// A bounding volume hierarchy over boxes (mesh triangles, a world's objects), built with
-// binned surface-area heuristic splits. Traversal visits the primitives of the leaves whose
-// boxes the ray meets, nearer child first, and lets a closest-hit query narrow the ray as it
-// goes. The slow exact twin is a loop over every primitive; tests compare the two.
+// A bounding volume hierarchy over boxes (mesh triangles, a world's objects, a CSG's
+// children), built with binned surface-area heuristic splits. Traversal visits the primitives
+// of the leaves whose boxes the ray meets, nearer child first, and lets a closest-hit query
+// narrow the ray as it goes; the point query visits the primitives whose leaves hold a point
+// (CSG's inside tests). The slow exact twin is a loop over every primitive; tests compare.
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -31,6 +32,11 @@ class Bvh {
   // within [tmin, tmax]; visit may lower tmax (double&) to prune what follows.
   template <class Visit>
   void traverse(const implicit::Ray& ray, double tmin, double& tmax, Visit&& visit) const;
+
+  // Calls visit(primitive) for every primitive of every leaf whose box contains p (callers
+  // test the primitive's own box) until visit returns true; returns whether one did.
+  template <class Visit>
+  bool any_at(const Vec3& p, Visit&& visit) const;
 
  private:
   struct Node {
@@ -95,6 +101,28 @@ void Bvh::traverse(const implicit::Ray& ray, double tmin, double& tmax, Visit&& 
       stack[top++] = first;
     }
   }
+}
+
+template <class Visit>
+bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
+  if (nodes_.empty()) return false;
+  uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const uint32_t index = stack[--top];
+    const Node& node = nodes_[index];
+    if (!contains(node.box, p)) continue;
+    if (node.count > 0) {
+      for (uint32_t i = node.offset; i < node.offset + node.count; ++i) {
+        if (visit(order_[i])) return true;
+      }
+      continue;
+    }
+    stack[top++] = node.offset;
+    stack[top++] = index + 1;
+  }
+  return false;
 }
 
 }  // namespace convray::geometry

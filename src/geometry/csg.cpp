@@ -1,13 +1,21 @@
 #include "geometry/csg.hpp"
 
 #include <algorithm>
-#include <stdexcept>
+#include <cmath>
 
 #include "geometry/bounds.hpp"
 
 namespace convray::geometry {
 
 using scene::CsgOperation;
+
+namespace {
+
+// Children per leaf: a handful keeps small CSGs (the usual two or three children) a single
+// leaf, asked in order as a plain loop would.
+constexpr int kLeafSize = 4;
+
+}  // namespace
 
 CsgShape::CsgShape(CsgOperation operation, std::vector<ShapePtr> children)
     : operation_(operation), children_(std::move(children)) {
@@ -18,6 +26,7 @@ CsgShape::CsgShape(CsgOperation operation, std::vector<ShapePtr> children)
   for (const ShapePtr& child : children_) {
     const Box3 b = child->bounds(), ib = child->inside_bounds();
     child_bounds_.push_back(b);
+    child_inside_bounds_.push_back(ib);
     surfaces = hull(surfaces, b);
     reach = overlap(reach, hull(b, ib));
     insides = hull(insides, ib);
@@ -37,53 +46,86 @@ CsgShape::CsgShape(CsgOperation operation, std::vector<ShapePtr> children)
     case CsgOperation::difference: {
       // A kept crossing lies on the first child or inside it.
       const Box3 first =
-          children_.empty() ? Box3{} : hull(child_bounds_[0], children_[0]->inside_bounds());
+          children_.empty() ? Box3{} : hull(child_bounds_[0], child_inside_bounds_[0]);
       bounds_ = overlap(surfaces, first);
-      inside_bounds_ = children_.empty() ? Box3{} : children_[0]->inside_bounds();
+      inside_bounds_ = children_.empty() ? Box3{} : child_inside_bounds_[0];
       break;
     }
   }
   if (is_empty(bounds_)) bounds_ = Box3{};
   if (is_empty(inside_bounds_)) inside_bounds_ = Box3{};
+  build_indexes();
+}
+
+void CsgShape::build_indexes() {
+  auto index = [](const std::vector<Box3>& boxes, Index& into) {
+    std::vector<Box3> finite;
+    for (size_t i = 0; i < boxes.size(); ++i) {
+      if (is_empty(boxes[i])) continue;  // nothing there: never met, never inside
+      if (is_finite(boxes[i])) {
+        into.bounded.push_back(uint32_t(i));
+        finite.push_back(padded(boxes[i]));
+      } else {
+        into.unbounded.push_back(uint32_t(i));
+      }
+    }
+    into.bvh = Bvh(finite, kLeafSize);
+  };
+  index(child_bounds_, surfaces_);
+  index(child_inside_bounds_, insides_);
+  // The inside tests compare points with the padded boxes: rounding never drops a child.
+  for (Box3& box : child_inside_bounds_) {
+    if (is_finite(box)) box = padded(box);
+  }
 }
 
 Box3 CsgShape::bounds() const { return bounds_; }
 Box3 CsgShape::inside_bounds() const { return inside_bounds_; }
 
-bool CsgShape::keeps(size_t from, const Vec3& p) const {
-  for (size_t j = 0; j < children_.size(); ++j) {
-    if (j == from) continue;
-    switch (operation_) {
-      case CsgOperation::union_:
-        return true;
-      case CsgOperation::merge:
-        if (children_[j]->inside(p)) return false;
-        break;
-      case CsgOperation::intersection:
-        if (!children_[j]->inside(p)) return false;
-        break;
-      case CsgOperation::difference:
-        // Inside the first child, outside every other.
-        if ((j == 0) != children_[j]->inside(p)) return false;
-        break;
-    }
+bool CsgShape::inside_other(const Vec3& p, size_t skip1, size_t skip2) const {
+  auto test = [&](uint32_t child) {
+    return child != skip1 && child != skip2 && contains(child_inside_bounds_[child], p) &&
+           children_[child]->inside(p);
+  };
+  for (uint32_t child : insides_.unbounded) {
+    if (test(child)) return true;
   }
-  return true;
+  return insides_.bvh.any_at(p, [&](uint32_t k) { return test(insides_.bounded[k]); });
+}
+
+bool CsgShape::keeps(size_t from, const Vec3& p) const {
+  constexpr size_t kNone = size_t(-1);
+  switch (operation_) {
+    case CsgOperation::union_:
+      return true;
+    case CsgOperation::merge:
+      return !inside_other(p, from, kNone);
+    case CsgOperation::intersection:
+      // Inside every other child: each must be asked (a box that misses p settles it).
+      for (size_t j = 0; j < children_.size(); ++j) {
+        if (j == from) continue;
+        if (!contains(child_inside_bounds_[j], p) || !children_[j]->inside(p)) return false;
+      }
+      return true;
+    case CsgOperation::difference:
+      // Inside the first child, outside every other.
+      if (from != 0 && !children_[0]->inside(p)) return false;
+      return !inside_other(p, 0, from);
+  }
+  return false;
 }
 
 bool CsgShape::inside(const Vec3& p) const {
+  constexpr size_t kNone = size_t(-1);
+  if (children_.empty()) return false;
   switch (operation_) {
     case CsgOperation::union_:
     case CsgOperation::merge:
-      return std::any_of(children_.begin(), children_.end(),
-                         [&](const ShapePtr& c) { return c->inside(p); });
+      return inside_other(p, kNone, kNone);
     case CsgOperation::intersection:
-      return !children_.empty() && std::all_of(children_.begin(), children_.end(),
-                                               [&](const ShapePtr& c) { return c->inside(p); });
+      return keeps(size_t(-1), p);
     case CsgOperation::difference:
-      if (children_.empty() || !children_[0]->inside(p)) return false;
-      return std::none_of(children_.begin() + 1, children_.end(),
-                          [&](const ShapePtr& c) { return c->inside(p); });
+      return children_[0]->inside(p) && !inside_other(p, 0, kNone);
   }
   return false;
 }
@@ -94,53 +136,77 @@ bool CsgShape::meets(const Ray& ray, double tmin, double tmax) const {
 }
 
 void CsgShape::child_crossings(const Ray& ray, double tmin, double tmax,
-                               std::vector<std::pair<Crossing, size_t>>& out,
-                               TraceStats& stats) const {
+                               std::vector<Candidate>& out, TraceStats& stats) const {
   // Not thread_local scratch: a child may be a CSG that gathers its own children here too.
   std::vector<Crossing> found;
-  for (size_t i = 0; i < children_.size(); ++i) {
+  auto ask = [&](uint32_t child) {
     double t0 = tmin, t1 = tmax;
-    if (!clip_to_box(ray, child_bounds_[i], t0, t1)) continue;
+    if (!clip_to_box(ray, child_bounds_[child], t0, t1)) return;
     found.clear();
-    children_[i]->crossings(ray, tmin, tmax, found, stats);
-    for (const Crossing& c : found) out.emplace_back(c, i);
-  }
-  std::stable_sort(out.begin(), out.end(),
-                   [](const auto& a, const auto& b) { return a.first.t < b.first.t; });
+    children_[child]->crossings(ray, tmin, tmax, found, stats);
+    for (const Crossing& c : found) out.push_back({c, child});
+  };
+  for (uint32_t child : surfaces_.unbounded) ask(child);
+  double reach = tmax;
+  surfaces_.bvh.traverse(ray, tmin, reach, [&](uint32_t k, double&) { ask(surfaces_.bounded[k]); });
+  // The hierarchy visits children out of order: ties go to the earlier child, as in a loop.
+  std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
+    return a.crossing.t < b.crossing.t || (a.crossing.t == b.crossing.t && a.child < b.child);
+  });
 }
 
 void CsgShape::crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
                          TraceStats& stats) const {
   if (!meets(ray, tmin, tmax)) return;
-  std::vector<std::pair<Crossing, size_t>> candidates;
+  std::vector<Candidate> candidates;
   child_crossings(ray, tmin, tmax, candidates, stats);
-  for (auto& [crossing, child] : candidates) {
-    if (!keeps(child, ray.at(crossing.t))) continue;
-    if (operation_ == CsgOperation::difference && child > 0) crossing.normal = -crossing.normal;
-    out.push_back(crossing);
+  for (Candidate& candidate : candidates) {
+    if (!keeps(candidate.child, ray.at(candidate.crossing.t))) continue;
+    if (operation_ == CsgOperation::difference && candidate.child > 0) {
+      candidate.crossing.normal = -candidate.crossing.normal;
+    }
+    out.push_back(candidate.crossing);
   }
+}
+
+std::optional<Crossing> CsgShape::first_of_union(const Ray& ray, double tmin, double tmax,
+                                                 TraceStats& stats) const {
+  // Every crossing counts: the nearest of the children's first ones, the ray shortened by
+  // each one found (ties: the earlier child, as in a loop).
+  std::optional<Crossing> nearest;
+  size_t nearest_child = 0;
+  auto ask = [&](uint32_t child, double& limit) {
+    double t0 = tmin, t1 = limit;
+    if (!clip_to_box(ray, child_bounds_[child], t0, t1)) return;
+    const double reach = nearest && child < nearest_child ? std::nextafter(limit, kInfinity) : limit;
+    if (auto c = children_[child]->first_crossing(ray, tmin, reach, stats)) {
+      nearest = c;
+      nearest_child = child;
+      limit = c->t;
+    }
+  };
+  double limit = tmax;
+  for (uint32_t child : surfaces_.unbounded) ask(child, limit);
+  surfaces_.bvh.traverse(ray, tmin, limit,
+                         [&](uint32_t k, double& reach) { ask(surfaces_.bounded[k], reach); });
+  return nearest;
 }
 
 std::optional<Crossing> CsgShape::first_crossing(const Ray& ray, double tmin, double tmax,
                                                  TraceStats& stats) const {
   if (!meets(ray, tmin, tmax)) return std::nullopt;
-  if (operation_ == CsgOperation::union_) {
-    // Every crossing counts: the nearest of the children's first ones.
-    std::optional<Crossing> nearest;
-    for (size_t i = 0; i < children_.size(); ++i) {
-      double t0 = tmin, t1 = tmax;
-      if (!clip_to_box(ray, child_bounds_[i], t0, t1)) continue;
-      if (auto c = children_[i]->first_crossing(ray, tmin, tmax, stats)) {
-        nearest = c;
-        tmax = c->t;
-      }
+  if (operation_ == CsgOperation::union_) return first_of_union(ray, tmin, tmax, stats);
+  // The candidates in order; the first one kept is the answer (later ones need no test).
+  std::vector<Candidate> candidates;
+  child_crossings(ray, tmin, tmax, candidates, stats);
+  for (Candidate& candidate : candidates) {
+    if (!keeps(candidate.child, ray.at(candidate.crossing.t))) continue;
+    if (operation_ == CsgOperation::difference && candidate.child > 0) {
+      candidate.crossing.normal = -candidate.crossing.normal;
     }
-    return nearest;
+    return candidate.crossing;
   }
-  std::vector<Crossing> all;
-  crossings(ray, tmin, tmax, all, stats);
-  if (all.empty()) return std::nullopt;
-  return all.front();
+  return std::nullopt;
 }
 
 }  // namespace convray::geometry

@@ -7,8 +7,12 @@
 //    inside the first and outside the rest, their normals flipped; inside the first and
 //    none of the rest.
 // Each kept crossing keeps its child's surface description (texture, interior).
+// The children sit in two hierarchies (bvh.hpp): one over their surfaces' boxes, which rays
+// traverse, and one over their insides' boxes, which inside tests query; so a ray or a point
+// costs about log n plus the children it really meets, not n.
 #include <vector>
 
+#include "geometry/bvh.hpp"
 #include "geometry/primitive.hpp"
 #include "scene/object.hpp"
 
@@ -27,17 +31,35 @@ class CsgShape final : public Shape {
   Box3 inside_bounds() const override;
 
  private:
-  // Whether a crossing of child `from` at p survives, and whether its normal flips.
+  // A crossing of one child, with the child's index.
+  struct Candidate {
+    Crossing crossing;
+    size_t child;
+  };
+  // Children's boxes in a hierarchy, and the children whose boxes are infinite.
+  struct Index {
+    Bvh bvh;
+    std::vector<uint32_t> bounded;    // BVH primitive -> child
+    std::vector<uint32_t> unbounded;  // always asked
+  };
+
+  void build_indexes();
+  // Whether a crossing of child `from` at p survives (its normal flips in a difference).
   bool keeps(size_t from, const Vec3& p) const;
+  // Whether p is inside some child other than `skip1` and `skip2`.
+  bool inside_other(const Vec3& p, size_t skip1, size_t skip2) const;
   // Whether the ray meets the bounds within [tmin, tmax].
   bool meets(const Ray& ray, double tmin, double tmax) const;
-  // Children's crossings, merged in ascending order, as (crossing, child).
-  void child_crossings(const Ray& ray, double tmin, double tmax,
-                       std::vector<std::pair<Crossing, size_t>>& out, TraceStats& stats) const;
+  // The crossings of the children the ray meets, ascending in t (ties: child order).
+  void child_crossings(const Ray& ray, double tmin, double tmax, std::vector<Candidate>& out,
+                       TraceStats& stats) const;
+  std::optional<Crossing> first_of_union(const Ray& ray, double tmin, double tmax,
+                                         TraceStats& stats) const;
 
   scene::CsgOperation operation_;
   std::vector<ShapePtr> children_;
-  std::vector<Box3> child_bounds_;  // each child's bounds(), cached
+  std::vector<Box3> child_bounds_, child_inside_bounds_;  // each child's, cached
+  Index surfaces_, insides_;  // over child_bounds_ and child_inside_bounds_
   Box3 bounds_, inside_bounds_;
 };
 

@@ -8,16 +8,6 @@
 namespace convray::geometry {
 namespace {
 
-// Object boxes grow by this fraction of their size (and a little absolutely) before they go
-// into the hierarchy, so that rounding in their computation never culls a grazing hit.
-constexpr double kBoxPadding = 1e-9;
-
-Box3 padded(const Box3& box) {
-  const Vec3 margin =
-      kBoxPadding * (box.hi - box.lo + glm::abs(box.lo) + glm::abs(box.hi)) + 1e-300;
-  return Box3{box.lo - margin, box.hi + margin};
-}
-
 void sort_by_distance(std::vector<Crossing>& crossings, size_t first) {
   std::stable_sort(crossings.begin() + std::ptrdiff_t(first), crossings.end(),
                    [](const Crossing& a, const Crossing& b) { return a.t < b.t; });
@@ -44,9 +34,11 @@ struct World::Index {
 World::World(const scene::Scene& scene, implicit::SupportCache* cache, implicit::Tracer tracer) {
   auto index = std::make_unique<Index>();
   std::vector<Box3> boxes;
+  std::vector<ShapePtr> built;
   for (const scene::ObjectPtr& object : scene.objects) {
-    if (!object) continue;
-    ShapePtr shape = build_shape(*object, cache, tracer);
+    if (object) build_split_shapes(*object, built, cache, tracer);
+  }
+  for (ShapePtr& shape : built) {
     const Box3 box = shape->bounds();
     const size_t id = shapes_.size();
     index->inside_boxes.push_back(shape->inside_bounds());

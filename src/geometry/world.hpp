@@ -1,6 +1,7 @@
 #pragma once
 // The scene's objects made ready for rays: one Shape per top-level object (classic
-// primitives, CSG, blobs and convolution objects), built once from the immutable Scene.
+// primitives, CSG, blobs and convolution objects), or per member of a union that splits,
+// built once from the immutable Scene.
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,6 +26,14 @@ namespace convray::geometry {
 // convolution surfaces are traced: the fast path, or its exact reference twin.
 ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache = nullptr,
                      implicit::Tracer tracer = implicit::Tracer::fast);
+
+// The shapes of one object for the scene's hierarchy: build_shape's, except that a union
+// POV-Ray would split (split_union, its default) gives its members, each placed, textured and
+// flagged as inside the union (recursively), so that rays find them as fast as objects that
+// stand alone. Appends to `out`.
+void build_split_shapes(const scene::Object& object, std::vector<ShapePtr>& out,
+                        implicit::SupportCache* cache = nullptr,
+                        implicit::Tracer tracer = implicit::Tracer::fast);
 
 class World {
  public:
@@ -53,8 +62,9 @@ class World {
                                                 TraceStats& stats) const;
   void shadow_crossings_brute_force(const Ray& ray, double tmin, double tmax,
                                     std::vector<Crossing>& out, TraceStats& stats) const;
+  // The shapes built: one per object, a split union's members counted one by one.
   size_t object_count() const { return shapes_.size(); }
-  // The shape built for the scene's i-th object (i < object_count()).
+  // The i-th shape built (i < object_count()), in the scene's order.
   const Shape& shape(size_t i) const { return *shapes_[i]; }
 
  private:

@@ -146,6 +146,9 @@ struct Object {
   bool inverse = false;     // inside and outside swapped
   bool no_shadow = false;   // casts no shadow
   bool hollow = false;
+  // union only: POV-Ray's split_union (on by default) puts the members into the scene's
+  // hierarchy; off keeps the union one object (with a hierarchy of its own inside).
+  bool split_union = true;
   // clipped_by and bounded_by objects are in the object's own space, like a CSG's children:
   // `transform` places them with the object.
   std::vector<ObjectPtr> clipped_by;  // keep only the parts inside all of these

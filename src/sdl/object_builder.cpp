@@ -157,6 +157,8 @@ bool ObjectBuilder::parse_flag(const std::string& word, const SourceLoc& loc) {
     object_.no_shadow = true;
   } else if (word == "hollow") {
     object_.hollow = optional_bool(parser_);
+  } else if (word == "split_union") {
+    object_.split_union = optional_bool(parser_);
   } else if (word == "sturm") {
     optional_bool(parser_);  // our roots are exact without it
   } else if (word == "photons" || word == "radiosity") {

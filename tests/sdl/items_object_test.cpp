@@ -210,6 +210,15 @@ TEST(ItemsObject, FlagsAndInterior) {
   EXPECT_TRUE(has_warning(parse("sphere { 0, 1 no_image }"), "'no_image' is ignored"));
 }
 
+TEST(ItemsObject, SplitUnionIsOnUnlessTurnedOff) {
+  const char* members = "sphere { 0, 1 } sphere { x, 1 }";
+  EXPECT_TRUE(only_object(parse(std::string("union { ") + members + " }"))->split_union);
+  EXPECT_TRUE(only_object(parse(std::string("union { ") + members + " split_union }"))->split_union);
+  const auto off = parse(std::string("union { ") + members + " split_union off }");
+  EXPECT_FALSE(only_object(off)->split_union);
+  EXPECT_FALSE(has_warning(off, "split_union"));  // honoured, not ignored
+}
+
 TEST(ItemsObject, MaterialSetsTextureAndInterior) {
   const auto object = only_object(
       parse("sphere { 0, 1 material { texture { pigment { rgb y } } interior { ior 1.33 } } }"));
