@@ -11,10 +11,12 @@
 #include "geometry/csg.hpp"
 #include "geometry/disc.hpp"
 #include "geometry/implicit_shape.hpp"
+#include "geometry/lathe.hpp"
 #include "geometry/modifiers.hpp"
 #include "geometry/plane.hpp"
 #include "geometry/polynomial_surface.hpp"
 #include "geometry/sphere.hpp"
+#include "geometry/superellipsoid.hpp"
 #include "geometry/extruded_outline.hpp"
 #include "geometry/torus.hpp"
 #include "geometry/transformed.hpp"
@@ -61,6 +63,12 @@ class ShapeBuilder {
   ShapePtr make(const scene::Polynomial& p, const Inherited& own) const;
   ShapePtr make(const scene::Text& t, const Inherited& own) const;
   ShapePtr make(const scene::Prism& p, const Inherited& own) const;
+  ShapePtr make(const scene::Superellipsoid& s, const Inherited& own) const {
+    return std::make_unique<SuperellipsoidShape>(s.e, s.n, surface_for(own));
+  }
+  ShapePtr make(const scene::Lathe& l, const Inherited& own) const {
+    return std::make_unique<LatheShape>(l.pieces, surface_for(own));
+  }
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
   ShapePtr make(const scene::TriangleMesh& m, const Inherited& own) const;
   ShapePtr make(const scene::Implicit& i, const Inherited& own) const;
