@@ -7,6 +7,7 @@
 
 #include "geometry/box.hpp"
 #include "geometry/cauchy_shape.hpp"
+#include "geometry/conic_prism.hpp"
 #include "geometry/cone.hpp"
 #include "geometry/csg.hpp"
 #include "geometry/disc.hpp"
@@ -153,16 +154,20 @@ ShapePtr ShapeBuilder::make(const scene::Prism& p, const Inherited& own) const {
   require(std::isfinite(p.height1) && std::isfinite(p.height2),
           "prism: the heights must be finite");
   for (const auto& polygon : p.polygons) {
-    for (const scene::OutlinePiece& piece : polygon) {
-      require(std::isfinite(piece.a.x + piece.a.y + piece.c.x + piece.c.y),
-              "prism: the points must be finite");
+    for (const scene::SplinePiece& piece : polygon) {
+      for (const Vec2& c : piece.c) {
+        require(std::isfinite(c.x + c.y), "prism: the points must be finite");
+      }
     }
   }
+  if (p.conic) {
+    return std::make_unique<ConicPrismShape>(p.polygons, p.height1, p.height2, surface_for(own));
+  }
   // Outline (x, z), extruded along y.
-  std::vector<scene::OutlinePiece> pieces;
+  std::vector<scene::SplinePiece> pieces;
   for (const auto& polygon : p.polygons) pieces.insert(pieces.end(), polygon.begin(), polygon.end());
   return std::make_unique<ExtrudedOutlineShape>(
-      std::vector<std::vector<scene::OutlinePiece>>{pieces},
+      std::vector<std::vector<scene::SplinePiece>>{pieces},
       ExtrusionAxes{0, 2, 1, p.height1, p.height2, true}, surface_for(own));
 }
 

@@ -25,7 +25,7 @@ class LatheShape final : public Shape {
 
  private:
   struct Piece {
-    double r[4], y[4];        // power-basis coefficients of r(s) and y(s)
+    double r[4], y[4];         // power-basis coefficients of r(s) and y(s)
     double y_lo, y_hi, r_max;  // bounds of the piece over s in [0, 1]
   };
   struct Root {

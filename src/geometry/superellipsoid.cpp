@@ -38,9 +38,7 @@ double SuperellipsoidShape::implicit_value(const Vec3& p) const {
 Vec3 SuperellipsoidShape::outward_normal(const Vec3& p) const {
   const double across = magnitude_power(p.x, p_) + magnitude_power(p.y, p_);
   const double outer = across == 0.0 ? 0.0 : std::pow(across, r_ - 1.0);
-  auto term = [](double v, double power) {
-    return std::copysign(magnitude_power(v, power), v);
-  };
+  auto term = [](double v, double power) { return std::copysign(magnitude_power(v, power), v); };
   Vec3 g(outer * term(p.x, p_ - 1.0), outer * term(p.y, p_ - 1.0), term(p.z, q_ - 1.0));
   const double length = glm::length(g);
   if (std::isfinite(length) && length > 0.0) return g / length;
@@ -127,7 +125,8 @@ void SuperellipsoidShape::crossings(const Ray& ray, double tmin, double tmax,
   } else {
     sampled_roots(ray, enter, leave, roots);
   }
-  for (double t : roots) add_crossing(t, outward_normal(ray.at(t)), surface_.get(), tmin, tmax, out);
+  for (double t : roots)
+    add_crossing(t, outward_normal(ray.at(t)), surface_.get(), tmin, tmax, out);
 }
 
 bool SuperellipsoidShape::inside(const Vec3& p) const { return implicit_value(p) < 0.0; }

@@ -53,7 +53,8 @@ std::vector<scene::SplinePiece> spline_pieces(SplineKind kind, const std::vector
       for (size_t i = 0; i + 1 < n; ++i) pieces.push_back(linear_piece(p[i], p[i + 1]));
       break;
     case SplineKind::quadratic:
-      for (size_t i = 1; i + 1 < n; ++i) pieces.push_back(quadratic_piece(p[i - 1], p[i], p[i + 1]));
+      for (size_t i = 1; i + 1 < n; ++i)
+        pieces.push_back(quadratic_piece(p[i - 1], p[i], p[i + 1]));
       break;
     case SplineKind::cubic:
       for (size_t i = 1; i + 2 < n; ++i) {

@@ -78,8 +78,7 @@ TEST(Lathe, ParabolaOfQuadraticPieces) {
     ASSERT_EQ(out.size(), 2u) << y;
     EXPECT_NEAR(out[0].t, 10.0 - (1.0 + y * y), 1e-12) << y;
     // The normal is perpendicular to the profile's slope (d rho / dy = 2y).
-    EXPECT_NEAR(glm::length(out[0].normal - glm::normalize(Vec3(-1.0, -2.0 * y, 0.0))), 0.0,
-                1e-12);
+    EXPECT_NEAR(glm::length(out[0].normal - glm::normalize(Vec3(-1.0, -2.0 * y, 0.0))), 0.0, 1e-12);
   }
   // A slanted ray meets the parabola where -10 + t cos a = -(1 + y^2), y = 0.1 + t sin a.
   const double a = 0.05;
@@ -92,7 +91,8 @@ TEST(Lathe, ParabolaOfQuadraticPieces) {
 TEST(Lathe, CrossingsWhereTheInsideChanges) {
   // A closed Bezier profile (a bulb) turned about the axis.
   auto bezier = [](Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-    return scene::SplinePiece{{a, 3.0 * (b - a), 3.0 * (a - 2.0 * b + c), -a + 3.0 * b - 3.0 * c + d}};
+    return scene::SplinePiece{
+        {a, 3.0 * (b - a), 3.0 * (a - 2.0 * b + c), -a + 3.0 * b - 3.0 * c + d}};
   };
   scene::Lathe lathe;
   lathe.pieces.push_back(bezier({0.2, -1}, {2, -1}, {2, 1}, {0.5, 1}));
