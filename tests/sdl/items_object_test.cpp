@@ -31,6 +31,13 @@ TEST(ItemsObject, MatrixAndTransformBlock) {
   expect_near(declared->transform.point(Vec3(1, 2, 3)), Vec3(1, 2, 3));
 }
 
+TEST(ItemsObject, MatrixWhoseLastValueIsAnExpression) {
+  // screen.inc ends a matrix with `CamL.z >`: the '>' closes the matrix.
+  const auto object = only_object(parse(
+      "#declare V = <1, 2, 3>;\nsphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, V.x, V.y, V.z\n> }"));
+  expect_near(object->transform.point(Vec3(0.0)), Vec3(1, 2, 3));
+}
+
 TEST(ItemsObject, ScaleByZeroIsChangedToOneWithAWarning) {
   const auto result = parse("sphere { 0, 1 scale <2, 0, 1> }");
   expect_near(only_object(result)->transform.point(Vec3(1, 1, 1)), Vec3(2, 1, 1));
