@@ -31,8 +31,8 @@ Value Parser::Impl::call_object_function(const LexToken& name, TokenRef at) {
   const Value value = parse_expression();
   const auto* object = value.get<scene::ObjectPtr>();
   if (object == nullptr || *object == nullptr) {
-    fail(object_at, "expected an object as the argument of '" + function + "', found " +
-                         type_name(value));
+    fail(object_at,
+         "expected an object as the argument of '" + function + "', found " + type_name(value));
   }
   if (const scene::UnsupportedObject* unsupported = find_unsupported(**object)) {
     fail(object_at, "'" + unsupported->kind + "' objects are not supported yet by convray: " +
