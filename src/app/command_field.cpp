@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/declared_object.hpp"
+#include "app/object_queries.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
@@ -118,6 +119,7 @@ int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, 
   sdl::ParseOptions parse_options;
   parse_options.library_paths = o.library_paths;
   parse_options.read_folders = o.read_folders;
+  parse_options.object_queries = geometry_object_queries();
   const sdl::ParseResult parsed = sdl::parse_file(o.scene_path, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.scene_path, o.object_name);
   const implicit::ConvolutionObject& record = std::get<scene::Implicit>(object.shape).object;

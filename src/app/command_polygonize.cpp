@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "app/declared_object.hpp"
+#include "app/object_queries.hpp"
 #include "app/short_number.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/cauchy_surface.hpp"
@@ -118,6 +119,7 @@ PreparedField prepare_scene(const PolygonizeOptions& o) {
   sdl::ParseOptions parse_options;
   parse_options.library_paths = o.library_paths;
   parse_options.read_folders = o.read_folders;
+  parse_options.object_queries = geometry_object_queries();
   const sdl::ParseResult parsed = sdl::parse_file(o.input, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.input, o.object_name);
   const implicit::ConvolutionObject& convolution = std::get<scene::Implicit>(object.shape).object;

@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "app/frame_names.hpp"
+#include "app/object_queries.hpp"
 #include "app/video.hpp"
 #include "geometry/world.hpp"
 #include "implicit/support_cache.hpp"
@@ -58,6 +59,7 @@ sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame,
   p.read_folders.push_back(std::filesystem::path(o.output).parent_path().string());
   p.read_anywhere = o.read_anywhere;
   p.declares = o.declares;
+  p.object_queries = geometry_object_queries();
   return p;
 }
 

@@ -7,14 +7,17 @@
 
 #include "geometry/box.hpp"
 #include "geometry/cauchy_shape.hpp"
+#include "geometry/conic_prism.hpp"
 #include "geometry/cone.hpp"
 #include "geometry/csg.hpp"
 #include "geometry/disc.hpp"
 #include "geometry/implicit_shape.hpp"
+#include "geometry/lathe.hpp"
 #include "geometry/modifiers.hpp"
 #include "geometry/plane.hpp"
 #include "geometry/polynomial_surface.hpp"
 #include "geometry/sphere.hpp"
+#include "geometry/superellipsoid.hpp"
 #include "geometry/extruded_outline.hpp"
 #include "geometry/torus.hpp"
 #include "geometry/transformed.hpp"
@@ -67,6 +70,12 @@ class ShapeBuilder {
   ShapePtr make(const scene::Polynomial& p, const Inherited& own) const;
   ShapePtr make(const scene::Text& t, const Inherited& own) const;
   ShapePtr make(const scene::Prism& p, const Inherited& own) const;
+  ShapePtr make(const scene::Superellipsoid& s, const Inherited& own) const {
+    return std::make_unique<SuperellipsoidShape>(s.e, s.n, surface_for(own));
+  }
+  ShapePtr make(const scene::Lathe& l, const Inherited& own) const {
+    return std::make_unique<LatheShape>(l.pieces, surface_for(own));
+  }
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
   ShapePtr make(const scene::TriangleMesh& m, const Inherited& own) const;
   ShapePtr make(const scene::Implicit& i, const Inherited& own) const;
@@ -169,16 +178,20 @@ ShapePtr ShapeBuilder::make(const scene::Prism& p, const Inherited& own) const {
   require(std::isfinite(p.height1) && std::isfinite(p.height2),
           "prism: the heights must be finite");
   for (const auto& polygon : p.polygons) {
-    for (const scene::OutlinePiece& piece : polygon) {
-      require(std::isfinite(piece.a.x + piece.a.y + piece.c.x + piece.c.y),
-              "prism: the points must be finite");
+    for (const scene::SplinePiece& piece : polygon) {
+      for (const Vec2& c : piece.c) {
+        require(std::isfinite(c.x + c.y), "prism: the points must be finite");
+      }
     }
   }
+  if (p.conic) {
+    return std::make_unique<ConicPrismShape>(p.polygons, p.height1, p.height2, surface_for(own));
+  }
   // Outline (x, z), extruded along y.
-  std::vector<scene::OutlinePiece> pieces;
+  std::vector<scene::SplinePiece> pieces;
   for (const auto& polygon : p.polygons) pieces.insert(pieces.end(), polygon.begin(), polygon.end());
   return std::make_unique<ExtrudedOutlineShape>(
-      std::vector<std::vector<scene::OutlinePiece>>{pieces},
+      std::vector<std::vector<scene::SplinePiece>>{pieces},
       ExtrusionAxes{0, 2, 1, p.height1, p.height2, true}, surface_for(own));
 }
 

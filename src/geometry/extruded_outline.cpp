@@ -12,42 +12,12 @@ namespace {
 
 double cross(const Vec2& u, const Vec2& v) { return u.x * v.y - u.y * v.x; }
 
-// The piece as a + s p1 + s^2 p2.
-struct PiecePolynomial {
-  Vec2 a, p1, p2;
-  explicit PiecePolynomial(const scene::OutlinePiece& piece)
-      : a(piece.a), p1(2.0 * (piece.b - piece.a)), p2(piece.a - 2.0 * piece.b + piece.c) {}
-  Vec2 at(double s) const { return a + s * (p1 + s * p2); }
-  Vec2 tangent(double s) const { return p1 + 2.0 * s * p2; }
-};
-
-// Roots in [0, 1) of c0 + c1 s + c2 s^2.
-int unit_roots(double c0, double c1, double c2, double roots[2]) {
-  const double c[3] = {c0, c1, c2};
-  int count = polynomial_roots(c, 0.0, 1.0, roots);
-  if (count > 0 && roots[count - 1] >= 1.0) --count;
-  return count;
-}
-
 }  // namespace
 
 int outline_winding(const std::vector<scene::OutlinePiece>& pieces, const Vec2& p) {
-  int winding = 0;
-  for (const scene::OutlinePiece& piece : pieces) {
-    if (std::min({piece.a.y, piece.b.y, piece.c.y}) > p.y) continue;
-    if (std::max({piece.a.y, piece.b.y, piece.c.y}) < p.y) continue;
-    if (std::max({piece.a.x, piece.b.x, piece.c.x}) < p.x) continue;
-    const PiecePolynomial curve(piece);
-    double roots[2];
-    const int count = unit_roots(curve.a.y - p.y, curve.p1.y, curve.p2.y, roots);
-    for (int i = 0; i < count; ++i) {
-      if (curve.at(roots[i]).x <= p.x) continue;
-      const double rising = curve.tangent(roots[i]).y;
-      if (rising > 0.0) ++winding;
-      if (rising < 0.0) --winding;
-    }
-  }
-  return winding;
+  std::vector<OutlineCurve> curves;
+  for (const scene::OutlinePiece& piece : pieces) curves.push_back(OutlineCurve::from(piece));
+  return curve_winding(curves, p);
 }
 
 ExtrudedOutlineShape::ExtrudedOutlineShape(
@@ -55,17 +25,34 @@ ExtrudedOutlineShape::ExtrudedOutlineShape(
     SurfaceInfoPtr surface)
     : axes_(axes), surface_(std::move(surface)) {
   for (const std::vector<scene::OutlinePiece>& pieces : groups) {
-    Group group{pieces, {}};
-    for (const scene::OutlinePiece& piece : pieces) {
-      for (const Vec2& p : {piece.a, piece.b, piece.c}) {
-        group.box.extend(object_vector(p.x, p.y, axes_.w0));
-        group.box.extend(object_vector(p.x, p.y, axes_.w1));
-      }
-    }
-    bounds_.extend(group.box.lo);
-    bounds_.extend(group.box.hi);
-    groups_.push_back(std::move(group));
+    std::vector<OutlineCurve> curves;
+    for (const scene::OutlinePiece& piece : pieces) curves.push_back(OutlineCurve::from(piece));
+    add_group(std::move(curves));
   }
+}
+
+ExtrudedOutlineShape::ExtrudedOutlineShape(
+    const std::vector<std::vector<scene::SplinePiece>>& groups, const ExtrusionAxes& axes,
+    SurfaceInfoPtr surface)
+    : axes_(axes), surface_(std::move(surface)) {
+  for (const std::vector<scene::SplinePiece>& pieces : groups) {
+    std::vector<OutlineCurve> curves;
+    for (const scene::SplinePiece& piece : pieces) curves.push_back(OutlineCurve::from(piece));
+    add_group(std::move(curves));
+  }
+}
+
+void ExtrudedOutlineShape::add_group(std::vector<OutlineCurve> pieces) {
+  Group group{std::move(pieces), {}};
+  for (const OutlineCurve& curve : group.pieces) {
+    for (const Vec2& p : {curve.lo, curve.hi}) {
+      group.box.extend(object_vector(p.x, p.y, axes_.w0));
+      group.box.extend(object_vector(p.x, p.y, axes_.w1));
+    }
+  }
+  bounds_.extend(group.box.lo);
+  bounds_.extend(group.box.hi);
+  groups_.push_back(std::move(group));
 }
 
 Vec3 ExtrudedOutlineShape::object_vector(double u, double v, double w) const {
@@ -76,9 +63,9 @@ Vec3 ExtrudedOutlineShape::object_vector(double u, double v, double w) const {
   return p;
 }
 
-bool ExtrudedOutlineShape::inside_outline(const std::vector<scene::OutlinePiece>& pieces,
+bool ExtrudedOutlineShape::inside_outline(const std::vector<OutlineCurve>& pieces,
                                           const Vec2& p) const {
-  const int winding = outline_winding(pieces, p);
+  const int winding = curve_winding(pieces, p);
   // Each crossing changes the winding by one: its parity is the crossings' parity.
   return axes_.even_odd ? winding % 2 != 0 : winding != 0;
 }
@@ -90,12 +77,12 @@ void ExtrudedOutlineShape::side_crossings(const Group& group, const Ray& ray, do
   // the extrusion, where the sides are met at grazing angles only.
   const int axis = std::abs(d.x) >= std::abs(d.y) ? 0 : 1;
   if (d[axis] == 0.0) return;
-  for (const scene::OutlinePiece& piece : group.pieces) {
-    const PiecePolynomial curve(piece);
+  for (const OutlineCurve& curve : group.pieces) {
     // Points of the piece on the ray's trace: cross(d, curve(s) - o) = 0.
-    double roots[2];
-    const int count =
-        unit_roots(cross(d, curve.a - o), cross(d, curve.p1), cross(d, curve.p2), roots);
+    const double k[4] = {cross(d, curve.c[0] - o), cross(d, curve.c[1]), cross(d, curve.c[2]),
+                         cross(d, curve.c[3])};
+    double roots[3];
+    const int count = unit_roots(k, roots);
     for (int i = 0; i < count; ++i) {
       const Vec2 q = curve.at(roots[i]);
       const double t = (q[axis] - o[axis]) / d[axis];

@@ -1,11 +1,13 @@
 #pragma once
-// Closed outlines of quadratic Bezier pieces extruded along an axis: POV-Ray's text object
-// (outlines in x, y; from z = 0 to the thickness) and linear prisms (outlines in x, z; from
-// height 1 to height 2 along y). Along a ray the crossings are exact: the two caps where the
-// outline winds around the ray's point in the cap's plane, and each side piece where the
-// quadratic of the piece meets the ray's trace in the outline's plane.
+// Closed outlines of polynomial pieces (outline_curve.hpp) extruded along an axis: POV-Ray's
+// text object (quadratic Bezier outlines in x, y; from z = 0 to the thickness) and prisms with
+// linear_sweep (spline outlines in x, z; from height 1 to height 2 along y). Along a ray the
+// crossings are exact: the two caps where the outline winds around the ray's point in the
+// cap's plane, and each side piece where the piece's cubic meets the ray's trace in the
+// outline's plane.
 #include <vector>
 
+#include "geometry/outline_curve.hpp"
 #include "geometry/primitive.hpp"
 #include "scene/object.hpp"
 
@@ -33,6 +35,8 @@ class ExtrudedOutlineShape final : public Shape {
   // inside any group, by the rule `axes` names.
   ExtrudedOutlineShape(const std::vector<std::vector<scene::OutlinePiece>>& groups,
                        const ExtrusionAxes& axes, SurfaceInfoPtr surface);
+  ExtrudedOutlineShape(const std::vector<std::vector<scene::SplinePiece>>& groups,
+                       const ExtrusionAxes& axes, SurfaceInfoPtr surface);
 
   Box3 bounds() const override { return bounds_; }
   void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
@@ -41,12 +45,13 @@ class ExtrudedOutlineShape final : public Shape {
 
  private:
   struct Group {
-    std::vector<scene::OutlinePiece> pieces;
+    std::vector<OutlineCurve> pieces;
     Box3 box;  // of the control points (the curves stay in their hull), w from w0 to w1
   };
+  void add_group(std::vector<OutlineCurve> pieces);
   Vec2 plane_point(const Vec3& p) const { return Vec2(p[axes_.u], p[axes_.v]); }
   Vec3 object_vector(double u, double v, double w) const;
-  bool inside_outline(const std::vector<scene::OutlinePiece>& pieces, const Vec2& p) const;
+  bool inside_outline(const std::vector<OutlineCurve>& pieces, const Vec2& p) const;
   void side_crossings(const Group& group, const Ray& ray, double tmin, double tmax,
                       std::vector<Crossing>& out) const;
 

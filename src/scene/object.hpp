@@ -112,12 +112,31 @@ struct Text {
   double thickness = 1.0;
 };
 
-// POV-Ray's `prism` with linear_sweep and linear_spline: closed polygons in the xz plane
-// (outline point (x, z)) extruded along y from height1 to height2 (height1 <= height2);
-// inside where an odd number of polygons enclose a point.
+// POV-Ray's `superellipsoid { <e, n> }` in the box [-1, 1]^3 (geometry/superellipsoid.hpp).
+struct Superellipsoid {
+  double e = 1.0, n = 1.0;
+};
+
+// One piece of a spline: the polynomial point(s) = c[0] + c[1] s + c[2] s^2 + c[3] s^3 for
+// s in [0, 1] (linear and quadratic pieces have zero high coefficients).
+struct SplinePiece {
+  std::array<Vec2, 4> c{};
+};
+
+// POV-Ray's `lathe`: the curve of the pieces' (r, y) points turned about the y axis;
+// inside where a point's (sqrt(x^2 + z^2), y) is enclosed an odd number of times.
+struct Lathe {
+  std::vector<SplinePiece> pieces;
+};
+
+// POV-Ray's `prism`: closed outlines of spline pieces in the xz plane (outline point (x, z)),
+// inside where an odd number of them enclose a point. linear_sweep: extruded along y from
+// height1 to height2 (height1 <= height2); conic_sweep: the outline scaled by y between
+// those heights, so that the sides run towards the origin.
 struct Prism {
-  std::vector<std::vector<OutlinePiece>> polygons;  // straight pieces, each polygon closed
+  std::vector<std::vector<SplinePiece>> polygons;  // each closed
   double height1 = 0.0, height2 = 1.0;
+  bool conic = false;
 };
 
 enum class CsgOperation { union_, intersection, difference, merge };
@@ -127,7 +146,8 @@ struct Csg {
 };
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
-                           Implicit, Csg, Polynomial, Text, Prism>;
+                           Implicit, Csg, Polynomial, Text, Prism, Superellipsoid,
+                           Lathe>;
 
 // A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
 // empty stand-in, so that include files declaring such objects still work; placing it in the

@@ -410,8 +410,10 @@ Value Parser::Impl::parse_keyword() {
       break;
   }
   // POV-Ray's functions of objects and patterns.
-  for (std::string_view unsupported :
-       {"trace", "inside", "min_extent", "max_extent", "vturbulence", "eval_pigment"}) {
+  if (t.view() == "trace" || t.view() == "min_extent" || t.view() == "max_extent") {
+    return call_object_function(t, at);
+  }
+  for (std::string_view unsupported : {"inside", "vturbulence", "eval_pigment"}) {
     if (t.view() == unsupported) {
       fail_unsupported(loc(at), quoted(unsupported) + " is not supported yet by convray");
     }

@@ -270,32 +270,15 @@ scene::Transform parse_scale(Parser& parser, const SourceLoc& loc) {
   return scene::Transform::scaling(factors);
 }
 
-// The twelfth value of a matrix. The core's float expressions read a '>' after a value as
-// "greater than" (only its own vector literals, of at most 5 components, know that '>' ends
-// them), so a plain number or declared float, optionally signed, is read here token by token;
-// anything else goes to the expression parser, which needs it parenthesised as a whole
-// comparison would be.
-double parse_last_matrix_value(Parser& parser) {
-  double sign = 1.0;
-  if (parser.at("-") || parser.at("+")) sign = parser.next().text == "-" ? -1.0 : 1.0;
-  const Token& token = parser.peek();
-  const Value* declared = parser.peek_declared();
-  if (token.kind == Token::Kind::number || (declared && declared->get<double>())) {
-    const double value =
-        token.kind == Token::Kind::number ? token.number : *declared->get<double>();
-    parser.next();
-    return sign * value;
-  }
-  return sign * float_param(parser, "matrix element 12");
-}
-
 scene::Transform parse_matrix(Parser& parser, const SourceLoc& loc) {
   parser.expect("<", "matrix");
   std::array<double, 12> m{};
   for (size_t k = 0; k < m.size(); ++k) {
     if (k > 0) parser.expect(",", "matrix (it has 12 values)");
+    // The last value may be any expression (`CamL.z` in screen.inc): a '>' after it ends
+    // the matrix instead of comparing, as in POV-Ray.
     m[k] = k + 1 < m.size() ? float_param(parser, "matrix element " + std::to_string(k + 1))
-                            : parse_last_matrix_value(parser);
+                            : parser.parse_float_in_angle_brackets();
   }
   parser.expect(">", "matrix (it has 12 values)");
   try {

@@ -130,10 +130,6 @@ scene::ObjectPtr items::with_default_texture(Parser& parser, scene::ObjectPtr ob
   return textured;
 }
 
-namespace {
-
-// The first stand-in for an unsupported object in `object`'s tree (CSG children, clipping and
-// bounding objects), or null.
 const scene::UnsupportedObject* find_unsupported(const scene::Object& object) {
   if (object.unsupported) return &*object.unsupported;
   const auto in = [](const scene::ObjectPtr& child) {
@@ -149,8 +145,6 @@ const scene::UnsupportedObject* find_unsupported(const scene::Object& object) {
   }
   return in(object.bounded_by);
 }
-
-}  // namespace
 
 scene::ObjectPtr items::placed_object(Parser& parser, scene::ObjectPtr object,
                                       const SourceLoc& at) {

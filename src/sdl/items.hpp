@@ -18,4 +18,8 @@ bool parse_item(Parser& parser, Value& out);
 // sky_sphere, global_settings. Fails with a clear message on anything else.
 void parse_statement(Parser& parser, scene::Scene& scene);
 
+// The first stand-in for an unsupported object in `object`'s tree (CSG children, clipping and
+// bounding objects), or null.
+const scene::UnsupportedObject* find_unsupported(const scene::Object& object);
+
 }  // namespace convray::sdl

@@ -9,6 +9,7 @@
 namespace convray::sdl {
 
 class MeshLibrary;
+class ObjectQueries;
 
 struct ParseOptions {
   int image_width = 800, image_height = 600;
@@ -37,6 +38,9 @@ struct ParseOptions {
   // Mesh files kept across parses (an animation's frames; sdl/mesh_library.hpp); without
   // one, each parse reads its meshes afresh.
   std::shared_ptr<MeshLibrary> mesh_library;
+  // min_extent, max_extent and trace() ask the objects' geometry (sdl/object_queries.hpp);
+  // without an implementation they are errors.
+  std::shared_ptr<const ObjectQueries> object_queries;
 };
 
 }  // namespace convray::sdl

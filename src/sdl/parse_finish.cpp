@@ -30,7 +30,9 @@ void parse_reflection(Parser& parser, const SourceLoc& loc, scene::Finish& finis
   std::optional<Block> block;
   if (block_form) block.emplace(parser, "reflection", loc);
   Vec3 reflection = rgb_param(parser, "reflection");
-  if (parser.accept(",")) {
+  // The maximum follows the minimum after a comma, or in the block form without one
+  // (`reflection { 0.0 1.0 fresnel on }`), as POV-Ray reads it.
+  if (parser.accept(",") || (block_form && (at_float_start(parser) || parser.at("rgb")))) {
     reflection = rgb_param(parser, "reflection");
     warn_once(parser, loc, "variable reflection: the maximum is used at every angle");
   }

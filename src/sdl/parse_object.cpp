@@ -37,6 +37,8 @@ constexpr ShapeKeyword kShapes[] = {
     {"convolution", parse_convolution},
     {"text", parse_text},
     {"prism", parse_prism},
+    {"superellipsoid", parse_superellipsoid},
+    {"lathe", parse_lathe},
     {"poly", parse_polynomial},
     {"cubic", parse_polynomial},
     {"quartic", parse_polynomial},
@@ -48,7 +50,8 @@ constexpr std::string_view kObjectWords[] = {
     "sphere",       "box",        "plane",           "cylinder", "cone",        "torus",
     "disc",         "triangle",   "smooth_triangle", "mesh",     "mesh2",       "union",
     "intersection", "difference", "merge",           "blob",     "convolution", "object",
-    "poly",         "cubic",      "quartic",         "quadric",  "text", "prism"};
+    "poly",         "cubic",      "quartic",         "quadric",  "text", "prism",
+    "superellipsoid", "lathe"};
 
 // The declared object named by the next token (consumed), or null when it names none.
 scene::ObjectPtr declared_object(Parser& parser) {
@@ -103,7 +106,7 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 }
 
 constexpr std::string_view kUnsupportedObjects[] = {
-    "lathe",         "sor",          "superellipsoid",
+    "sor",
     "polynomial", "isosurface",    "parametric",    "julia_fractal", "bicubic_patch",
     "height_field", "polygon",     "sphere_sweep",  "ovus",          "lemon"};
 

@@ -305,6 +305,8 @@ struct Parser::Impl {
 
   // --- functions.cpp
   Value call_builtin(const LexToken& name, TokenRef at);
+  // --- object_functions.cpp: min_extent, max_extent, trace (the name not yet consumed).
+  Value call_object_function(const LexToken& name, TokenRef at);
   Value call_string_function(Word word, std::vector<Value>& args, TokenRef at);
   Value call_vector_function(Word word, std::vector<Value>& args, TokenRef at);
   double next_random(double stream, TokenRef at);

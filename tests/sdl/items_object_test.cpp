@@ -31,6 +31,13 @@ TEST(ItemsObject, MatrixAndTransformBlock) {
   expect_near(declared->transform.point(Vec3(1, 2, 3)), Vec3(1, 2, 3));
 }
 
+TEST(ItemsObject, MatrixWhoseLastValueIsAnExpression) {
+  // screen.inc ends a matrix with `CamL.z >`: the '>' closes the matrix.
+  const auto object = only_object(parse(
+      "#declare V = <1, 2, 3>;\nsphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, V.x, V.y, V.z\n> }"));
+  expect_near(object->transform.point(Vec3(0.0)), Vec3(1, 2, 3));
+}
+
 TEST(ItemsObject, ScaleByZeroIsChangedToOneWithAWarning) {
   const auto result = parse("sphere { 0, 1 scale <2, 0, 1> }");
   expect_near(only_object(result)->transform.point(Vec3(1, 1, 1)), Vec3(2, 1, 1));
@@ -188,14 +195,14 @@ TEST(ItemsObject, DeclaredMaterialKeepsItsTexture) {
 }
 
 TEST(ItemsObject, UnsupportedObjectsFailButMayBeDeclared) {
-  EXPECT_TRUE(fails_with("union { sphere { 0, 1 } lathe { } }", 1, 25,
-                         "'lathe' objects are not supported yet"));
+  EXPECT_TRUE(fails_with("union { sphere { 0, 1 } sor { } }", 1, 25,
+                         "'sor' objects are not supported yet"));
   // text objects are drawn now: a missing font is the error, at its name.
   EXPECT_TRUE(fails_with("text { ttf \"no-such-font.ttf\" \"A\" 1, 0 }", 1, 12,
                          "file not found: 'no-such-font.ttf'"));
   // Include files declare such objects that most scenes never use: declaring one warns.
-  const auto result = parse("#declare L = lathe { 2, <0, 0>, <1, 1> }");
-  EXPECT_TRUE(has_warning(result, "'lathe' objects are not supported yet"));
+  const auto result = parse("#declare L = sor { 4, <0, 0>, <1, 1>, <1, 2>, <0, 3> }");
+  EXPECT_TRUE(has_warning(result, "'sor' objects are not supported yet"));
 }
 
 TEST(ItemsObject, FlagsAndInterior) {

@@ -174,6 +174,14 @@ TEST(ItemsTexture, ReflectionBlockKeepsTheMaximum) {
   EXPECT_TRUE(has_warning(result, "fresnel reflection is not rendered"));
 }
 
+TEST(ItemsTexture, ReflectionBlockMinimumAndMaximumWithoutAComma) {
+  // gamma_showcase.pov writes `reflection { 0.0 1.0 fresnel on }`; POV-Ray reads both.
+  const auto result = parse("sphere { 0, 1 finish { reflection { 0.0 1.0 fresnel on } } }");
+  expect_near(texture_of(result).finish.reflection, Vec3(1.0));
+  const auto colours = parse("sphere { 0, 1 finish { reflection { rgb 0.1 rgb <0.5, 0.6, 0.7> } } }");
+  expect_near(texture_of(colours).finish.reflection, Vec3(0.5, 0.6, 0.7));
+}
+
 TEST(ItemsTexture, InteriorAndIgnoredFade) {
   const auto result = parse("sphere { 0, 1 interior { ior 1.5 fade_distance 2 fade_power 1 } }");
   EXPECT_EQ(only_object(result)->interior->ior, 1.5);

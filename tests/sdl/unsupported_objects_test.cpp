@@ -45,7 +45,7 @@ TEST(UnsupportedObjects, PlacingOneIsAnErrorWhereItIsPlaced) {
       scene_error(std::string(kDeclared) + "sphere { 0, 1 clipped_by { object { Vase } } }\n");
   EXPECT_EQ(clipping.loc.line, 2);
   // Written in place, the object itself is the error.
-  EXPECT_NE(scene_error("lathe { 2, <0, 0>, <1, 1> }").first_line.find("'lathe' objects"),
+  EXPECT_NE(scene_error("sor { 4, <0, 0>, <1, 1>, <1, 2>, <0, 3> }").first_line.find("'sor' objects"),
             std::string::npos);
 }
 
