@@ -155,17 +155,24 @@ void CsgShape::child_crossings(const Ray& ray, double tmin, double tmax,
   });
 }
 
+// A child's crossing as the CSG's own, or nothing where the operation drops it (a subtracted
+// child's surface faces the other way).
+std::optional<Crossing> CsgShape::kept_crossing(const Candidate& candidate, const Ray& ray) const {
+  if (!keeps(candidate.child, ray.at(candidate.crossing.t))) return std::nullopt;
+  Crossing crossing = candidate.crossing;
+  if (operation_ == CsgOperation::difference && candidate.child > 0) {
+    crossing.normal = -crossing.normal;
+  }
+  return crossing;
+}
+
 void CsgShape::crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
                          TraceStats& stats) const {
   if (!meets(ray, tmin, tmax)) return;
   std::vector<Candidate> candidates;
   child_crossings(ray, tmin, tmax, candidates, stats);
-  for (Candidate& candidate : candidates) {
-    if (!keeps(candidate.child, ray.at(candidate.crossing.t))) continue;
-    if (operation_ == CsgOperation::difference && candidate.child > 0) {
-      candidate.crossing.normal = -candidate.crossing.normal;
-    }
-    out.push_back(candidate.crossing);
+  for (const Candidate& candidate : candidates) {
+    if (auto kept = kept_crossing(candidate, ray)) out.push_back(*kept);
   }
 }
 
@@ -199,12 +206,8 @@ std::optional<Crossing> CsgShape::first_crossing(const Ray& ray, double tmin, do
   // The candidates in order; the first one kept is the answer (later ones need no test).
   std::vector<Candidate> candidates;
   child_crossings(ray, tmin, tmax, candidates, stats);
-  for (Candidate& candidate : candidates) {
-    if (!keeps(candidate.child, ray.at(candidate.crossing.t))) continue;
-    if (operation_ == CsgOperation::difference && candidate.child > 0) {
-      candidate.crossing.normal = -candidate.crossing.normal;
-    }
-    return candidate.crossing;
+  for (const Candidate& candidate : candidates) {
+    if (auto kept = kept_crossing(candidate, ray)) return kept;
   }
   return std::nullopt;
 }

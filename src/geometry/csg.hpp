@@ -46,6 +46,7 @@ class CsgShape final : public Shape {
   void build_indexes();
   // Whether a crossing of child `from` at p survives (its normal flips in a difference).
   bool keeps(size_t from, const Vec3& p) const;
+  std::optional<Crossing> kept_crossing(const Candidate& candidate, const Ray& ray) const;
   // Whether p is inside some child other than `skip1` and `skip2`.
   bool inside_other(const Vec3& p, size_t skip1, size_t skip2) const;
   // Whether the ray meets the bounds within [tmin, tmax].

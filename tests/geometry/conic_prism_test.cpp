@@ -22,12 +22,7 @@ std::vector<scene::SplinePiece> square() {
   return pieces;
 }
 
-std::vector<Crossing> crossings_of(const Shape& shape, const Ray& ray) {
-  std::vector<Crossing> out;
-  TraceStats stats;
-  shape.crossings(ray, 0.0, INFINITY, out, stats);
-  return out;
-}
+using testing::crossings_of;
 
 TEST(ConicPrism, SquareIsAFrustumOfAPyramid) {
   const ConicPrismShape shape({square()}, 0.5, 1.0, nullptr);

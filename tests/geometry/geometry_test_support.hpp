@@ -49,6 +49,14 @@ inline Ray random_ray(std::mt19937_64& rng, const Vec3& center, double distance,
   return Ray{origin, glm::normalize(aim - origin)};
 }
 
+// Every crossing of the whole ray (t >= 0).
+inline std::vector<Crossing> crossings_of(const Shape& shape, const Ray& ray) {
+  std::vector<Crossing> out;
+  TraceStats stats;
+  shape.crossings(ray, 0.0, INFINITY, out, stats);
+  return out;
+}
+
 inline std::vector<double> crossing_distances(const Shape& shape, const Ray& ray, double tmin,
                                               double tmax) {
   std::vector<Crossing> crossings;

@@ -25,12 +25,7 @@ scene::Lathe cylinder() {
   return lathe;
 }
 
-std::vector<Crossing> crossings_of(const Shape& shape, const Ray& ray) {
-  std::vector<Crossing> out;
-  TraceStats stats;
-  shape.crossings(ray, 0.0, INFINITY, out, stats);
-  return out;
-}
+using testing::crossings_of;
 
 TEST(Lathe, CylinderProfileAcrossAndAlongTheAxis) {
   const ShapePtr shape = build(cylinder());

@@ -15,12 +15,7 @@ namespace {
 
 using testing::build;
 
-std::vector<Crossing> crossings_of(const Shape& shape, const Ray& ray) {
-  std::vector<Crossing> out;
-  TraceStats stats;
-  shape.crossings(ray, 0.0, INFINITY, out, stats);
-  return out;
-}
+using testing::crossings_of;
 
 TEST(Superellipsoid, OneOneIsTheUnitSphere) {
   const ShapePtr shape = build(scene::Superellipsoid{1.0, 1.0});
