@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -156,7 +157,9 @@ void span_triangles(const LineContext& line, std::vector<TriangleCandidate>& can
   thread_local std::vector<uint32_t> ids;
   thread_local TriangleSpanBatch batch;
   std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const auto& a, const auto& b) { return a.source < b.source; });
+                   [](const auto& a, const auto& b) {
+                     return std::less<const GeometrySource*>()(a.source, b.source);
+                   });
   for (size_t begin = 0; begin < candidates.size();) {
     const GeometrySource& source = *candidates[begin].source;
     size_t end = begin;
