@@ -9,6 +9,7 @@
 
 #include "sdl/item_parsers.hpp"
 #include "sdl/object_builder.hpp"
+#include "sdl/spline_points.hpp"
 #include "sdl/splines.hpp"
 
 namespace convray::sdl::items {
@@ -106,19 +107,9 @@ scene::ObjectPtr parse_prism(Parser& parser) {
   parser.accept_comma();
   double height2 = float_param(parser, "the prism's second height");
   parser.accept_comma();
-  const SourceLoc count_at = parser.peek().loc;
-  const int count = int(parser.parse_float_before_points());
-  if (count < 3) parser.fail(count_at, "a prism needs at least 3 points");
-  if (const std::string problem = spline_count_problem(form.spline, size_t(count));
-      !problem.empty()) {
-    parser.fail(count_at, "prism: " + problem + ", found " + std::to_string(count));
-  }
-  std::vector<Vec2> points;
-  for (int i = 0; i < count; ++i) {
-    parser.accept_comma();
-    const Vec3 point = vector_param(parser, "a prism point <x, z>");
-    points.emplace_back(point.x, point.y);
-  }
+  const std::vector<Vec2> points =
+      parse_spline_points(parser, form.spline, "prism", "a prism point <x, z>", 3,
+                          "a prism needs at least 3 points");
   if (accept_word(parser, "open")) {
     parser.fail_unsupported(loc, "an open prism (without caps) is not supported yet by convray");
   }
