@@ -1,9 +1,16 @@
 #pragma once
-// The safeguarded bracketed refiner of the ray tracers: Illinois regula falsi on a
-// sign-changing bracket, with a bisection step every fourth iteration and whenever the secant
-// leaves the bracket, until the bracket is a few ulps wide or the function is exactly zero.
+// The safeguarded bracketed refiner of the ray tracers. On a sign-changing bracket it steps by
+// secants through the last two points evaluated (superlinear near a simple root), falling back
+// to regula falsi of the bracket for the first step and to bisection whenever a step leaves the
+// bracket or the steps stop shrinking; once a step is below the resolution, it lands just past
+// the root's side of the last point, so the bracket closes around the root. It stops when the
+// bracket is a few ulps wide or the function is exactly zero.
+//
 // `g(t)` is the exact function (the field minus T); g_lo = g(lo) and g_hi = g(hi) differ in
-// sign. Returns the end of the final bracket where |g| is smaller (or the exact zero).
+// sign. `guess`, when inside the bracket, is evaluated first, and the first step is Newton's
+// with `guess_slope` when that is given (the window march passes the root of the cubic Hermite
+// interpolant of its samples, accurate to O(h^4), and the interpolant's slope there). Returns
+// the end of the final bracket where |g| is smaller (or the exact zero).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,28 +18,52 @@
 namespace convray::implicit {
 
 template <class Function>
-double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&& g) {
-  int side = 0;
+double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&& g,
+                      double guess = std::numeric_limits<double>::quiet_NaN(),
+                      double guess_slope = std::numeric_limits<double>::quiet_NaN()) {
+  const bool lo_negative = g_lo < 0.0;
+  double t = guess > lo && guess < hi ? guess : (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+  double last_t = 0.0, last_g = 0.0;  // the previous point evaluated, for the secant
+  bool have_last = false;
+  double previous_step = hi - lo;
+  int slow = 0;  // steps in a row that did not halve
   for (int iteration = 0; iteration < 200; ++iteration) {
-    const double width = hi - lo;
-    const double ulps =
+    const double resolution =
         8.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi));
-    if (width <= ulps) break;
-    double t = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-    if (iteration % 4 == 3 || !(t > lo && t < hi)) t = 0.5 * (lo + hi);
+    if (hi - lo <= resolution) break;
+    if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     const double value = g(t);
     if (value == 0.0) return t;
-    if ((value < 0.0) == (g_lo < 0.0)) {
+    const bool root_above = (value < 0.0) == lo_negative;
+    if (root_above) {
       lo = t;
       g_lo = value;
-      if (side == -1) g_hi *= 0.5;  // Illinois: the end that stays gets its weight halved
-      side = -1;
     } else {
       hi = t;
       g_hi = value;
-      if (side == 1) g_lo *= 0.5;
-      side = 1;
     }
+    if (hi - lo <= resolution) break;
+    double next = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);  // regula falsi of the bracket
+    if (have_last && value != last_g) {
+      next = t - value * (t - last_t) / (value - last_g);
+    } else if (!have_last && guess_slope != 0.0 && std::isfinite(guess_slope)) {
+      next = t - value / guess_slope;  // Newton from the guess, with its slope
+    }
+    const double step = std::abs(next - t);
+    slow = step > 0.5 * previous_step ? slow + 1 : 0;
+    if (step < 0.5 * resolution) {
+      // Converged to within the resolution: close the bracket on the root's side of t (a
+      // point always inside it, since it is wider than the resolution).
+      next = root_above ? t + 0.5 * resolution : t - 0.5 * resolution;
+    } else if (!(next > lo && next < hi) || slow >= 3) {
+      next = 0.5 * (lo + hi);
+      slow = 0;
+    }
+    previous_step = std::abs(next - t);
+    last_t = t;
+    last_g = value;
+    have_last = true;
+    t = next;
   }
   return std::abs(g_lo) < std::abs(g_hi) ? lo : hi;
 }

@@ -224,7 +224,8 @@ Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t, nullp
 double ClusterField::curvature(double a, double b) const {
   double sum = 0.0;
   for (const Member& m : members_) {
-    if (m.enter <= b && m.exit >= a) sum += m.curvature;
+    if (m.enter > b) break;  // the cluster is sorted by entry
+    if (m.exit >= a) sum += m.curvature;
   }
   return sum / s_.threshold;
 }
@@ -236,6 +237,31 @@ double certified_step(const Sample& a, double curvature) {
   const double towards = a.g < 0.0 ? a.d : -a.d;  // slope towards T
   const double denominator = towards + std::sqrt(towards * towards + 2.0 * curvature * gap);
   return denominator > 0.0 ? 2.0 * gap / denominator : kInfinity;
+}
+
+// The root in (a.t, b.t) of the cubic Hermite interpolant of two samples on either side of T
+// (their values and slopes), within O(h^4) of the field's root, and the interpolant's slope
+// there: the refiner's first guess and first Newton step.
+struct Guess {
+  double t, slope;
+};
+Guess hermite_root(const Sample& a, const Sample& b) {
+  const double h = b.t - a.t;
+  const auto p = [&](double u) {
+    const double u2 = u * u, u3 = u2 * u;
+    return (2 * u3 - 3 * u2 + 1) * a.g + (u3 - 2 * u2 + u) * h * a.d + (3 * u2 - 2 * u3) * b.g +
+           (u3 - u2) * h * b.d;
+  };
+  double lo = 0.0, hi = 1.0;
+  const bool lo_negative = a.g < 0.0;
+  for (int i = 0; i < 30; ++i) {  // bisection of the cubic to 1e-9 of the window: no field work
+    const double mid = 0.5 * (lo + hi);
+    ((p(mid) < 0.0) == lo_negative ? lo : hi) = mid;
+  }
+  const double u = 0.5 * (lo + hi);
+  const double dp = (6 * u * u - 6 * u) * (a.g - b.g) + (3 * u * u - 4 * u + 1) * h * a.d +
+                    (3 * u * u - 2 * u) * h * b.d;  // dp/du
+  return {a.t + u * h, dp / h};
 }
 
 // Whether the Taylor envelopes of a and b (same side of T) keep F off T on [a.t, b.t].
@@ -283,8 +309,10 @@ bool Marcher::bracket(const Sample& a, const Sample& b) {
   double t = b.t;
   if (mode_ != RootMode::any) {
     ++stats_.roots;
+    const Guess guess = hermite_root(a, b);
     t = refine_bracket(a.t, b.t, a.g, b.g,
-                       [&](double x) { return field_.value_minus_threshold(x); });
+                       [&](double x) { return field_.value_minus_threshold(x); },
+                       guess.t, guess.slope);
   }
   if (out_.empty() || t > out_.back() + 1e-9 * s_.min_radius) out_.push_back(t);
   last_root_ = t;
