@@ -53,6 +53,8 @@ void write_image_atomically(const std::string& path, const ImagePixels& pixels);
 // Whether `path` holds a whole image of this size that reads back without error: `+C`
 // (continue) trusts such a frame and skips it. A missing, truncated or damaged file, or one of
 // another size, is not complete.
+// PNG is checked here; other formats are read back by the plugin, and a missing plugin is an
+// InputError, as it is for image_format_for.
 bool image_file_is_complete(const std::string& path, int width, int height);
 
 // The sRGB transfer curve, for linear values clamped to [0, 1].
