@@ -1,8 +1,6 @@
 #include "render/image_file.hpp"
 
-#include <OpenImageIO/filesystem.h>
 #include <zlib.h>
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cctype>
@@ -14,6 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "render/image_plugin.hpp"
+#include "render/png_writer.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
@@ -31,11 +31,6 @@ std::string lower_extension(const fs::path& path) {
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   return extension;
-}
-
-OIIO::TypeDesc stored_type(const ImageFormat& format) {
-  if (format.floating) return OIIO::TypeDesc::FLOAT;
-  return format.bits == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
 }
 
 // The values handed to OpenImageIO: sRGB-encoded where an integer format stores linear light.
@@ -61,9 +56,9 @@ ImageFormat image_format_for(const std::string& path) {
     throw InputError({path}, "the image name needs an extension to choose its format (" +
                                  std::string(kKnownFormats) + ")");
   }
-  // Asks OpenImageIO for a writer without touching the disk.
-  if (!OIIO::ImageOutput::create(path)) {
-    OIIO::geterror();  // clear the message this failure left
+  // PNG is written here (render/png_writer.hpp); for any other extension OpenImageIO is asked
+  // for a writer, without touching the disk.
+  if (extension != "png" && !image_plugin::can_write(path)) {
     throw InputError({path},
                      "cannot write images of type '." + extension + "' (" + kKnownFormats + ")");
   }
@@ -119,70 +114,30 @@ bool image_file_is_complete(const std::string& path, int width, int height) {
   std::error_code error;
   if (!fs::is_regular_file(path, error)) return false;
   if (lower_extension(fs::path(path)) == "png") return png_is_whole(path, width, height);
-  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
-  if (!in) {
-    OIIO::geterror();  // clear the message this failure left
-    return false;
-  }
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width != width || spec.height != height || spec.nchannels < 3) return false;
-  // Reading every pixel is what finds a truncated file: the header alone can be intact.
-  std::vector<float> pixels(size_t(width) * size_t(height) * size_t(spec.nchannels));
-  const bool whole = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data());
-  if (!whole) in->geterror();
-  in->close();
-  return whole;
+  return image_plugin::reads_whole(path, width, height);
 }
 
 namespace {
 
-OIIO::ImageSpec spec_for(const ImageFormat& format, const ImagePixels& pixels) {
-  OIIO::ImageSpec spec(pixels.width, pixels.height, 3, stored_type(format));
-  if (format.floating) {
-    spec.attribute("oiio:ColorSpace", "Linear");
-  } else if (pixels.encoding == PixelEncoding::linear) {
-    spec.attribute("oiio:ColorSpace", "sRGB");  // what encoded_for made of it
-  }
-  return spec;
+// What the plugin records as the file's colour space, where the format can say it.
+std::string color_space_of(const ImageFormat& format, const ImagePixels& pixels) {
+  if (format.floating) return "Linear";
+  return pixels.encoding == PixelEncoding::linear ? "sRGB" : "";  // what encoded_for made of it
 }
 
-// The encoded file in memory, for PNG (every render's default): the bytes then reach the
-// disk through AtomicFile, every write checked. Empty for other formats: OpenImageIO 2.4's
-// TIFF writer, for one, claims an I/O proxy but writes a file without its image length.
-std::vector<unsigned char> encode_in_memory(const std::string& path, const ImageFormat& format,
-                                            const ImagePixels& pixels,
-                                            const std::vector<float>& values) {
-  std::vector<unsigned char> bytes;
-  if (format.extension != "png") return bytes;
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-  if (!out || !out->supports("ioproxy")) return bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  const bool written = out->set_ioproxy(&memory) && out->open(path, spec_for(format, pixels)) &&
-                       out->write_image(OIIO::TypeDesc::FLOAT, values.data()) && out->close();
-  if (!written) {
-    const std::string problem = out->geterror();
-    throw InputError({path}, "cannot write the image: " +
-                                 (problem.empty() ? std::string("the encoder failed") : problem));
-  }
-  return bytes;
-}
-
-// Writers that open the file by name write into a private folder; the result is read back
-// whole before it replaces anything, since such a writer may not report a full disk.
-void write_by_name(const std::string& path, const ImageFormat& format, const ImagePixels& pixels,
-                   const std::vector<float>& values) {
+// Every format but PNG is written by OpenImageIO (in the plugin), which opens the file by name:
+// it writes into a private folder, and the result is read back whole before it replaces
+// anything, since such a writer may not report a full disk. (OpenImageIO 2.4's TIFF writer,
+// for one, claims to write into memory but leaves out the image length.)
+void write_by_name(const std::string& path, const ImageFormat& format, const ImagePixels& pixels) {
+  const std::vector<float> values = encoded_for(format, pixels);
   AtomicFileByName file(path, "the image", "image." + format.extension);
-  std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-  const bool written = out && out->open(file.path().string(), spec_for(format, pixels)) &&
-                       out->write_image(OIIO::TypeDesc::FLOAT, values.data()) && out->close();
-  std::string problem = written ? "" : (out ? out->geterror() : OIIO::geterror());
-  out.reset();
-  if (written && !image_file_is_complete(file.path().string(), pixels.width, pixels.height)) {
-    problem = "the file written does not read back whole (is the disk full?)";
-  }
-  if (!problem.empty() || !written) {
-    throw InputError({path}, "cannot write the image: " +
-                                 (problem.empty() ? "the writer gave no reason" : problem));
+  image_plugin::write(path, file.path().string(), pixels.width, pixels.height, format.bits,
+                      color_space_of(format, pixels), values.data());
+  if (!image_file_is_complete(file.path().string(), pixels.width, pixels.height)) {
+    throw InputError({path},
+                     "cannot write the image: the file written does not read back whole "
+                     "(is the disk full?)");
   }
   file.commit();
 }
@@ -195,12 +150,13 @@ void write_image_atomically(const std::string& path, const ImagePixels& pixels) 
       pixels.rgb.size() != 3 * size_t(pixels.width) * size_t(pixels.height)) {
     throw std::invalid_argument("write_image_atomically: pixel count does not match the size");
   }
-  const std::vector<float> values = encoded_for(format, pixels);
-  const std::vector<unsigned char> bytes = encode_in_memory(path, format, pixels, values);
-  if (bytes.empty()) return write_by_name(path, format, pixels, values);
-  write_file_atomically(
-      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
-      "the image");
+  if (format.extension != "png") return write_by_name(path, format, pixels);
+  // PNG, every render's default, is encoded in memory; the bytes then reach the disk through
+  // AtomicFile, every write checked.
+  const std::vector<unsigned char> bytes = encode_png(path, pixels);
+  write_file_atomically(path,
+                        std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                        "the image");
 }
 
 }  // namespace convray::render

@@ -1,8 +1,10 @@
 #pragma once
-// Writing pictures through OpenImageIO, the format chosen by the file name's extension:
+// Writing pictures, the format chosen by the file name's extension:
 //
-//   .png (and any other 8-bit format OpenImageIO writes: .jpg, .ppm, .bmp, .tga, ...)
-//                  8 bits per channel, sRGB-encoded
+//   .png           8 bits per channel, sRGB-encoded, by libpng (render/png_writer.hpp)
+//   any other format OpenImageIO writes, through a plugin loaded on first use
+//   (render/image_plugin.hpp), so that a PNG render never loads OpenImageIO:
+//   .jpg .ppm .bmp .tga ...  8 bits per channel, sRGB-encoded
 //   .tif .tiff     16 bits per channel, sRGB-encoded
 //   .exr .hdr      32-bit float (.hdr: RGBE), linear: the renderer's values untouched
 //
@@ -37,7 +39,7 @@ struct ImageFormat {
 };
 
 // The format a file of this name is written in. Throws InputError ("PATH: ...") when the name
-// has no extension or OpenImageIO has no writer for it.
+// has no extension or OpenImageIO has no writer for it (asked only for names not ending .png).
 ImageFormat image_format_for(const std::string& path);
 
 // Checks, before any work is done, that `path` can be written: a known format, and a folder
@@ -51,6 +53,8 @@ void write_image_atomically(const std::string& path, const ImagePixels& pixels);
 // Whether `path` holds a whole image of this size that reads back without error: `+C`
 // (continue) trusts such a frame and skips it. A missing, truncated or damaged file, or one of
 // another size, is not complete.
+// PNG is checked here; other formats are read back by the plugin, and a missing plugin is an
+// InputError, as it is for image_format_for.
 bool image_file_is_complete(const std::string& path, int width, int height);
 
 // The sRGB transfer curve, for linear values clamped to [0, 1].

@@ -184,6 +184,44 @@ TEST_F(ImageFile, CompletenessFindsEveryTruncationQuietly) {
   EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
 }
 
+// Formats other than PNG go through the plugin: written, checked whole, and a truncated file
+// is not complete.
+TEST_F(ImageFile, PluginFormatsAreCheckedWhole) {
+  const std::vector<float> values = test_values();
+  for (const std::string name : {"a.exr", "a.tif", "a.jpg"}) {
+    write_image_atomically(path(name), {4, 2, values, PixelEncoding::linear});
+    EXPECT_EQ(read_back(path(name)).width, 4) << name;
+    EXPECT_TRUE(image_file_is_complete(path(name), 4, 2)) << name;
+    EXPECT_FALSE(image_file_is_complete(path(name), 4, 3)) << name;
+    const auto size = fs::file_size(path(name));
+    fs::resize_file(path(name), size / 2);
+    EXPECT_FALSE(image_file_is_complete(path(name), 4, 2)) << name << " cut to " << size / 2;
+  }
+}
+
+// A destination that cannot be written fails the same way whichever writer the format has
+// (libpng here, OpenImageIO in the plugin): the same message after the name, no file left.
+TEST_F(ImageFile, AnUnwritableDestinationFailsAlikeForEveryFormat) {
+  std::ofstream(path("file.txt")) << "not a folder";
+  const std::vector<float> values = test_values();
+  std::vector<std::string> messages;
+  for (const std::string name : {"file.txt/a.png", "file.txt/a.exr", "file.txt/a.tif"}) {
+    EXPECT_THROW(check_image_destination(path(name)), InputError) << name;
+    try {
+      write_image_atomically(path(name), {4, 2, values, PixelEncoding::linear});
+      ADD_FAILURE() << name << " was written";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      ASSERT_EQ(what.find(path(name) + ": cannot write the image: "), 0u) << what;
+      messages.push_back(what.substr(path(name).size()));
+    }
+  }
+  ASSERT_EQ(messages.size(), 3u);
+  EXPECT_EQ(messages[0], messages[1]);
+  EXPECT_EQ(messages[0], messages[2]);
+  EXPECT_EQ(files_in_folder(), 1u);  // only file.txt
+}
+
 TEST(EncodeSrgb, MatchesTheDefinition) {
   for (const float v : {0.0f, 0.002f, 0.0031308f, 0.01f, 0.5f, 0.9f, 1.0f})
     EXPECT_NEAR(encode_srgb(v), srgb(v), 1e-6);
