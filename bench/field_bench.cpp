@@ -83,15 +83,16 @@ void batch_field(benchmark::State& state, bool clipped) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(tris.size()));
 }
 
-// The window march's calls: a few listed lanes (8 of a cluster's 32 triangles) per call, as
-// one sample of a ray's cluster evaluates the triangles whose support holds the point.
-void batch_field_listed8(benchmark::State& state, bool clipped) {
+// The window march's calls: a few listed lanes (state.range(0) of a cluster's 32 triangles)
+// per call, as one sample of a ray's cluster evaluates the triangles whose support holds the
+// point; counts that are not a multiple of the SIMD width show the cost of the remainder.
+void batch_field_listed(benchmark::State& state, bool clipped) {
   auto tris = make_triangles(clipped);
   tris.resize(32);
   const convray::field::TriangleBatch batch(tris);
   const double r = radius_for(clipped);
   std::vector<uint32_t> lanes;
-  for (uint32_t i = 0; i < tris.size(); i += 4) lanes.push_back(i);
+  for (uint32_t i = 0; i < uint32_t(state.range(0)); ++i) lanes.push_back(i * 32 / uint32_t(state.range(0)));
   for (auto _ : state) benchmark::DoNotOptimize(batch.field(Vec3(0.0), r, lanes));
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(lanes.size()));
 }
@@ -130,8 +131,8 @@ BENCHMARK_CAPTURE(scalar_field, wholly_inside, false);
 BENCHMARK_CAPTURE(scalar_field, clipped, true);
 BENCHMARK_CAPTURE(batch_field, wholly_inside, false);
 BENCHMARK_CAPTURE(batch_field, clipped, true);
-BENCHMARK_CAPTURE(batch_field_listed8, wholly_inside, false);
-BENCHMARK_CAPTURE(batch_field_listed8, clipped, true);
+BENCHMARK_CAPTURE(batch_field_listed, wholly_inside, false)->Arg(8)->Arg(9);
+BENCHMARK_CAPTURE(batch_field_listed, clipped, true)->Arg(5)->Arg(8)->Arg(9)->Arg(11);
 BENCHMARK(segment_value);
 BENCHMARK(segment_batch_value);
 
