@@ -49,14 +49,17 @@ Value Parser::Impl::parse_array_declaration() {
     advance();
     while (!accept_symbol('}')) {
       if (array->elements.size() == kMaxArrayElements) fail_here("array too large");
+      if (array->elements.size() % 4096 == 0) reserve_elements(4096, ref());
       array->elements.push_back(parse_rvalue());
       accept_symbol(',');  // optional, as POV-Ray's commas are
     }
     if (array->elements.empty()) fail(at, "an array needs at least one element");
+    array->counted = reserve_elements(array->elements.size(), at);
     array->dimensions.push_back(int(array->elements.size()));
     return Value{array, {}};
   }
   charge(total / kElementsPerToken);
+  array->counted = reserve_elements(total, at);
   array->elements.resize(total);
   if (plain_symbol('{')) {
     std::size_t next = 0;
@@ -150,11 +153,21 @@ Value* Parser::Impl::element_at(Value& root, const std::vector<std::size_t>& pat
     }
     if (for_write && array->use_count() > 1) {
       charge((*array)->elements.size() / kElementsPerToken);
+      reserve_elements((*array)->elements.size(), at);  // the copy holds them again
       *array = std::make_shared<Array>(**array);
     }
     cursor = &(*array)->elements[flat];
   }
   return cursor;
+}
+
+ElementCount Parser::Impl::reserve_elements(std::size_t count, TokenRef at) {
+  const std::size_t budget = options.max_live_array_elements;
+  if (count > budget - std::min(*live_array_elements, budget)) {
+    fail(at, "the scene's arrays would hold more than " + std::to_string(budget) +
+                 " elements in all (an array of arrays counts every element of each)");
+  }
+  return ElementCount(live_array_elements, count);
 }
 
 }  // namespace convray::sdl

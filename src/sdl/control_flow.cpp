@@ -284,10 +284,7 @@ void Parser::Impl::directive_end(TokenRef at) {
         frames.back().blocks.pop_back();
         return;
       }
-      if (++loop.iterations >= options.max_loop_iterations) {
-        fail(token_loc(frames.back().file, loop.opened_at),
-             "#while loop exceeded " + std::to_string(options.max_loop_iterations) + " iterations");
-      }
+      count_iteration(loop);
       return;
     }
     case Block::Kind::for_: {
@@ -304,13 +301,25 @@ void Parser::Impl::directive_end(TokenRef at) {
         frame.blocks.pop_back();
         return;
       }
-      if (++block.iterations >= options.max_loop_iterations) {
-        fail(token_loc(frame.file, block.opened_at),
-             "#for loop exceeded " + std::to_string(options.max_loop_iterations) + " iterations");
-      }
+      count_iteration(block);
       frame.pos = block.loop_start;
       moved();
       return;
+    }
+  }
+}
+
+void Parser::Impl::count_iteration(Block& loop) {
+  ++loop.own_iterations;
+  for (Frame& frame : frames) {
+    for (Block& block : frame.blocks) {
+      if (block.kind != Block::Kind::while_ && block.kind != Block::Kind::for_) continue;
+      if (++block.iterations < options.max_loop_iterations) continue;
+      const char* kind = block.kind == Block::Kind::while_ ? "#while" : "#for";
+      const bool nested = block.iterations != block.own_iterations;
+      fail(token_loc(frame.file, block.opened_at),
+           std::string(kind) + " loop exceeded " + std::to_string(options.max_loop_iterations) +
+               " iterations" + (nested ? " (counting those of the loops inside it)" : ""));
     }
   }
 }

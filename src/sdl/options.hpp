@@ -35,6 +35,9 @@ struct ParseOptions {
   int max_macro_depth = 256;
   long long max_loop_iterations = 10'000'000;   // per #while / #for loop
   long long max_tokens = 2'000'000'000;         // tokens read in all
+  // Elements of all live arrays together (an array of arrays counts every element of each):
+  // about 1.6 GB of values.
+  std::size_t max_live_array_elements = std::size_t(1) << 24;
   // Mesh files kept across parses (an animation's frames; sdl/mesh_library.hpp); without
   // one, each parse reads its meshes afresh.
   std::shared_ptr<MeshLibrary> mesh_library;

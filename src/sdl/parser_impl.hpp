@@ -69,7 +69,8 @@ struct Block {
   Kind kind = Kind::if_;
   std::uint32_t opened_at = 0;   // token index of the opening directive
   std::uint32_t loop_start = 0;  // while: the condition's first token; for: the body's
-  long long iterations = 0;
+  long long iterations = 0;  // of this loop, and of the loops run inside it (counted once each)
+  long long own_iterations = 0;
   std::string variable;  // for: the loop variable, its last value and step
   double last = 0.0, step = 1.0;
 };
@@ -166,6 +167,9 @@ struct Parser::Impl {
   int less_starts_vector = 0;  // > 0: a '<' ends the float (parse_float_before_points)  // > 0: directly inside < >, where '>' ends the vector
   int frame_floor = 0;  // frames at or below this count are not left by lookahead
   long long tokens_read = 0;
+  // The elements of every live array (sdl::ElementCount), against
+  // ParseOptions::max_live_array_elements.
+  std::shared_ptr<std::size_t> live_array_elements = std::make_shared<std::size_t>(0);
 
   // The settled token and the public Token made from it, valid until the stream moves.
   bool settled = false;
@@ -185,6 +189,14 @@ struct Parser::Impl {
   const LexToken& settle_next();
   void advance();
   void charge(std::size_t tokens);  // work other than reading tokens, in tokens
+  // One more iteration of the innermost loop `loop`: counted for it and for every loop it runs
+  // inside (a nested loop's iterations are its enclosing loops' work), against
+  // ParseOptions::max_loop_iterations.
+  void count_iteration(Block& loop);
+  // Fails at `at` when `count` more array elements would take the live arrays past
+  // ParseOptions::max_live_array_elements; otherwise returns their count, for the new array
+  // to hold.
+  ElementCount reserve_elements(std::size_t count, TokenRef at);
   void moved() {
     settled = false;
     materialized = false;

@@ -174,6 +174,29 @@ TEST(ControlFlow, LoopIterationsAreLimited) {
             1000.0);
 }
 
+// A loop's iterations count for the loops it runs inside: nested loops of 40 x 40 iterations
+// are 1600 for the outer one (reported at the outer loop), whether the inner loop is written in
+// place or runs in a macro; 30 x 30 stay within the limit.
+TEST(ControlFlow, NestedLoopIterationsCountForTheEnclosingLoop) {
+  ParseOptions options;
+  options.max_loop_iterations = 1000;
+  const std::string nested =
+      "#declare I = 0;\n#while (I < N)\n  #declare J = 0;\n"
+      "  #while (J < N) #declare J = J + 1; #end\n  #declare I = I + 1;\n#end\n";
+  const core_testing::Failure failure = scene_error("#declare N = 40;\n" + nested, options);
+  EXPECT_EQ(failure.first_line,
+            "#while loop exceeded 1000 iterations (counting those of the loops inside it)");
+  EXPECT_EQ(failure.loc.line, 3);
+  EXPECT_EQ(failure.loc.column, 1);
+  EXPECT_EQ(declared("#declare N = 30;\n" + nested + "#declare Done = I * J;", "Done", options),
+            900.0);
+  const core_testing::Failure in_macro = scene_error(
+      "#macro Inner() #for (J, 1, 40) #end #end\n#for (I, 1, 40) Inner() #end", options);
+  EXPECT_EQ(in_macro.first_line,
+            "#for loop exceeded 1000 iterations (counting those of the loops inside it)");
+  EXPECT_EQ(in_macro.loc.line, 2);
+}
+
 TEST(ControlFlow, DefaultLoopLimitMessage) {
   ParseOptions options;
   options.max_loop_iterations = 10'000'000;
