@@ -111,8 +111,8 @@ bool apply_clock_switch(RenderOptions& o, bool on, const std::string& key, const
   const auto rest = [&](size_t n) { return body.substr(n); };
   if (key == "kc") {
     a.cyclic = on;
-  } else if (!on || !key.starts_with("k")) {
-    return false;
+  } else if (!key.starts_with("k") || (!on && body.size() == 1)) {
+    return false;  // -K0.5 sets the clock as +K0.5 does; -K alone is not a clock switch
   } else if (key.starts_with("kfi")) {
     a.initial_frame = frame_number(rest(3), arg);
   } else if (key.starts_with("kff")) {
@@ -418,19 +418,22 @@ void apply_switch(RenderOptions& o, const std::string& arg) {
   const bool on = arg[0] == '+';
   const std::string body = arg.substr(1), key = lower(body);
   const auto rest = [&](size_t n) { return body.substr(n); };
+  // A switch that carries a value reads the same after '-' as after '+' (POV-Ray 3.7 renders
+  // with -W320 -H240 -Iscene.pov -Oout.png -Lfolder -R3); '+' alone also takes none.
+  const auto given = [&](size_t n) { return on || !rest(n).empty(); };
   if (key.starts_with("wt")) {
     o.threads = int(whole(rest(2), arg, 1, 1024));
-  } else if (key.starts_with("w") && on) {
+  } else if (key.starts_with("w") && given(1)) {
     o.width = int(whole(rest(1), arg, 1, 32768));
-  } else if (key.starts_with("h") && on) {
+  } else if (key.starts_with("h") && given(1)) {
     o.height = int(whole(rest(1), arg, 1, 32768));
-  } else if (key.starts_with("i") && on) {
+  } else if (key.starts_with("i") && given(1)) {
     if (rest(1).empty()) throw UsageError(arg + ": expected the scene file after +I");
     o.scene = rest(1);
-  } else if (key.starts_with("o") && on) {
+  } else if (key.starts_with("o") && given(1)) {
     if (rest(1).empty()) throw UsageError(arg + ": expected the output file after +O");
     o.output = rest(1);
-  } else if (key.starts_with("l") && on) {
+  } else if (key.starts_with("l") && given(1)) {
     if (rest(1).empty()) throw UsageError(arg + ": expected a folder after +L");
     o.library_paths.push_back(rest(1));
   } else if (key.starts_with("am") || key == "a" || (key.starts_with("a") && !on)) {
@@ -439,14 +442,14 @@ void apply_switch(RenderOptions& o, const std::string& arg) {
     o.antialias = on;
   } else if (key.starts_with("a")) {
     set_aa_threshold(o, rest(1), arg);
-  } else if (key.starts_with("r") && on) {
+  } else if (key.starts_with("r") && given(1)) {
     o.aa_depth = int(whole(rest(1), arg, 1, 9));
   } else if (key.starts_with("j")) {
     on ? set_jitter(o, rest(1), arg) : void(o.jitter = false);
   } else if (apply_clock_switch(o, on, key, body, arg)) {
-  } else if (key.starts_with("sf") && on) {
+  } else if (key.starts_with("sf") && given(2)) {
     o.animation.subset_start = number(rest(2), arg);
-  } else if (key.starts_with("ef") && on) {
+  } else if (key.starts_with("ef") && given(2)) {
     o.animation.subset_end = number(rest(2), arg);
   } else if (key == "c") {
     o.continue_trace = on;

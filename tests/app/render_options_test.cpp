@@ -74,6 +74,27 @@ TEST(RenderOptions, LongOptionsAndPovRaySwitchesMix) {
   EXPECT_DOUBLE_EQ(*o.animation.clock, 0.25);
 }
 
+// POV-Ray 3.7 reads a switch that carries a value the same after '-' as after '+'
+// (`povray -Is.pov -W32 -H24 -Oa.png -Linc -R3` renders a.png at 32x24 with inc/ searched).
+TEST(RenderOptions, ValueSwitchesReadTheSameAfterAMinus) {
+  const RenderOptions minus =
+      parse({"-Is.pov", "-W32", "-H24", "-Oa.png", "-Linc", "-R4", "-K0.5", "-KFF9", "-SF2"});
+  const RenderOptions plus =
+      parse({"+Is.pov", "+W32", "+H24", "+Oa.png", "+Linc", "+R4", "+K0.5", "+KFF9", "+SF2"});
+  EXPECT_EQ(minus.scene, plus.scene);
+  EXPECT_EQ(minus.width, 32);
+  EXPECT_EQ(minus.height, 24);
+  EXPECT_EQ(minus.output, plus.output);
+  EXPECT_EQ(minus.library_paths, plus.library_paths);
+  EXPECT_EQ(minus.aa_depth, 4);
+  ASSERT_TRUE(minus.animation.clock.has_value());
+  EXPECT_DOUBLE_EQ(*minus.animation.clock, 0.5);
+  EXPECT_EQ(minus.animation.final_frame, plus.animation.final_frame);
+  EXPECT_EQ(minus.animation.subset_start, plus.animation.subset_start);
+  // Without a value, '-' keeps its meaning of "off" where it has one, and +A/-A still toggle.
+  EXPECT_FALSE(parse({"s.pov", "+A", "-A"}).antialias);
+}
+
 TEST(RenderOptions, ConsoleSwitchesPovRayUsersPassAreAccepted) {
   EXPECT_NO_THROW(parse({"s.pov", "+D", "-D", "-V", "+P", "-GA", "+Q9", "+FN"}));
 }
