@@ -7,6 +7,7 @@
 #include <string>
 
 #include "field/cauchy.hpp"
+#include "implicit/bracket_refine.hpp"
 
 namespace convray::implicit {
 
@@ -16,9 +17,6 @@ namespace {
 // smallest truncation margin: far below any feature of the surface, large enough that a ray
 // grazing the surface takes a bounded number of steps.
 constexpr double kMinStepFraction = 1e-3;
-// Root refinement: Illinois steps, then bisection, to this fraction of the ray's scale.
-constexpr int kRefineIterations = 200;
-constexpr double kRefineTolerance = 1e-13;
 // Bounds on F - T this close to zero (times T) are re-evaluated rather than trusted: the
 // shifts by entering and leaving primitives accumulate rounding.
 constexpr double kBoundsRounding = 1e-12;
@@ -220,27 +218,10 @@ struct CauchySurface::Tracer {
     return std::max(reach / speed, surface.min_step_);
   }
 
-  // A sign change of F - T in [t0, t1] (f0, f1 its values): Illinois steps (regula falsi that
-  // halves the stale end's value), bisection where they stall, to rounding level.
+  // A sign change of F - T in [t0, t1] (f0, f1 its values), refined on the exact field by the
+  // tracers' one bracketed refiner, to a few ulps.
   double refine(double t0, double t1, double f0, double f1) const {
-    int stale = 0;
-    for (int i = 0; i < kRefineIterations; ++i) {
-      if (t1 - t0 <= kRefineTolerance * (1.0 + std::abs(t0) + std::abs(t1))) break;
-      double t = t1 - f1 * (t1 - t0) / (f1 - f0);
-      if (!(t > t0 && t < t1) || i >= kRefineIterations / 2) t = 0.5 * (t0 + t1);
-      const double f = excess(t);
-      if (f == 0.0) return t;
-      if ((f >= 0.0) == (f1 >= 0.0)) {
-        t1 = t, f1 = f;
-        if (stale == 1) f0 *= 0.5;
-        stale = 1;
-      } else {
-        t0 = t, f0 = f;
-        if (stale == -1) f1 *= 0.5;
-        stale = -1;
-      }
-    }
-    return 0.5 * (t0 + t1);
+    return refine_bracket(t0, t1, f0, f1, [&](double t) { return excess(t); });
   }
 
   SurfaceHit smooth_hit(double t) const {
