@@ -286,8 +286,9 @@ class Marcher {
           TraceStats& stats)
       : s_(s), field_(field), mode_(mode), out_(out), stats_(stats) {}
 
-  // Whether the search is over (a root found where one is enough).
-  bool march(double from, double to);
+  // Whether the search is over (a root found where one is enough). `at_cluster_entry`: `from`
+  // is where the ray enters the cluster's first support.
+  bool march(double from, double to, bool at_cluster_entry);
   double last_root() const { return last_root_; }
 
  private:
@@ -350,9 +351,12 @@ double Marcher::certified_reach(const Sample& a, double to, double min_step,
   }
 }
 
-bool Marcher::march(double from, double to) {
+bool Marcher::march(double from, double to, bool at_cluster_entry) {
   const double min_step = kMinStep * s_.min_radius, max_step = kMaxStep * s_.min_radius;
-  Sample a = field_.sample(from);
+  // Where the ray enters the cluster's first support, every field of the cluster is zero with
+  // a zero slope (each kernel vanishes with zero slope at its support's edge, and no other
+  // support has begun): F = 0 < T, F' = 0, known without an evaluation.
+  Sample a = at_cluster_entry ? Sample{from, -1.0, 0.0} : field_.sample(from);
   if (a.g == 0.0 && bracket(a, a)) return true;
   while (a.t < to) {
     ++stats_.fits;
@@ -407,7 +411,8 @@ void march_cluster(const Impl& surface, const Ray& ray,
   const double to = std::min(tmax, field.reach());
   if (!(from < to)) return;
   Marcher marcher(surface, field, mode, out, stats);
-  if (marcher.march(from, to) && mode == RootMode::first && first_gradient) {
+  if (marcher.march(from, to, from == cluster.front().enter) && mode == RootMode::first &&
+      first_gradient) {
     *first_gradient = field.gradient(marcher.last_root());
   }
 }
