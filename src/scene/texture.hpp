@@ -32,6 +32,11 @@ enum class Pattern {
   wrinkles,
   bumps,
   dents,
+  planar,       // 1 at y = 0 falling to 0 at |y| = 1
+  spherical,    // 1 at the origin falling to 0 at |p| = 1
+  cylindrical,  // 1 on the y axis falling to 0 at distance 1
+  boxed,        // 1 at the origin falling to 0 on the cube's faces at |x|, |y|, |z| = 1
+  spiral1,      // `arms` spirals winding about z like a screw
 };
 
 // A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
@@ -52,13 +57,14 @@ struct Turbulence {
 };
 
 // POV-Ray's wave types: how a pattern's value v = value * frequency + phase becomes the
-// value looked up in the map. `pattern_default`: triangle for marble and wood, ramp otherwise.
+// value looked up in the map. `pattern_default`: triangle for marble, wood and spiral1, ramp otherwise.
 enum class Wave { pattern_default, ramp, triangle, sine, scallop, cubic, poly };
 
 // What every pattern shares: where it is evaluated and how its value is reshaped.
 struct PatternSpace {
   Pattern pattern = Pattern::solid;
   Vec3 gradient_axis{1.0, 0.0, 0.0};  // gradient only
+  double arms = 1.0;                  // spiral1 only: its number of arms
   Turbulence turbulence;
   double frequency = 1.0;  // value -> fract(value * frequency + phase)
   double phase = 0.0;
