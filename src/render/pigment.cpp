@@ -79,18 +79,6 @@ const std::vector<ColorMapEntry>& default_color_map(Pattern pattern) {
   }
 }
 
-const scene::Texture& texture_at(const scene::Texture& texture, const Vec3& world_point) {
-  static const scene::Texture kDefault = scene::default_texture();
-  const scene::Texture* at = &texture;
-  while (at->blocks) {
-    const scene::TextureBlocks& blocks = *at->blocks;
-    const size_t block = size_t(int(pattern_value(blocks.space, world_point)));
-    if (block >= blocks.textures.size() || !blocks.textures[block]) return kDefault;
-    at = blocks.textures[block].get();
-  }
-  return *at;
-}
-
 namespace {
 
 // The pigments of a pigment_map at `value`, as a colour map mixes its colours.

@@ -119,20 +119,26 @@ struct Interior {
 struct Texture;
 using TexturePtr = std::shared_ptr<const Texture>;
 
-// POV-Ray's block texture patterns (`texture { checker texture { A } texture { B } }`): at
-// each point the pattern's block number picks one whole texture, never a blend of two.
-struct TextureBlocks {
-  PatternSpace space;                // checker
-  std::vector<TexturePtr> textures;  // by block number
+// POV-Ray's texture patterns: at each point a pattern picks whole textures.
+//   blocks   `checker texture { A } texture { B }`: the block number picks one texture
+//   map      `PATTERN texture_map { [v T] ... }`: as a colour map picks colours; between two
+//            entries both textures are shaded and their colours mixed
+//   average  `average texture_map { [w T] ... }`: every texture, weighted by w / sum of w
+struct TextureMap {
+  enum class Kind { blocks, map, average };
+  Kind kind = Kind::blocks;
+  PatternSpace space;                // blocks and map: the pattern
+  std::vector<double> values;        // map: the entries' values, ascending; average: weights
+  std::vector<TexturePtr> textures;  // blocks: by block number; map, average: by entry
 };
 
 struct Texture {
   Pigment pigment;
   Finish finish;
   Normal normal;
-  // Set: the texture is made of these blocks, and its own pigment, finish and normal are
-  // not used.
-  std::shared_ptr<const TextureBlocks> blocks;
+  // Set: the texture is this pattern of textures, and its own pigment, finish and normal
+  // are not used.
+  std::shared_ptr<const TextureMap> map;
   // Layered textures (`texture { A } texture { B }`: the later one lies on top): the layer
   // under this one, seen where this one's pigment lets light through; null for the last.
   TexturePtr below;
