@@ -85,6 +85,20 @@ double spiral1(const Vec3& q, double arms) {
   return std::hypot(q.x, q.y) + arms * turn + q.z;
 }
 
+// POV-Ray's mandel: z = c = x + iy, then z = z^2 + c until |z|^2 > 4; the value is the
+// number of steps taken before the one that escaped over `iterations`, 1 inside the set
+// (matches the povray binary's 16-bit renders pixel for pixel at 7, 20 and 50 iterations).
+double mandel(const Vec3& q, int iterations) {
+  double zr = q.x, zi = q.y;
+  for (int k = 0; k < iterations; ++k) {
+    const double r = zr * zr - zi * zi + q.x;
+    zi = 2.0 * zr * zi + q.y;
+    zr = r;
+    if (zr * zr + zi * zi > 4.0) return double(k) / iterations;
+  }
+  return 1.0;
+}
+
 double gradient(const Vec3& q, const Vec3& axis) {
   const double length = glm::length(axis);
   return length > 0.0 ? glm::dot(q, axis) / length : 0.0;
@@ -149,6 +163,8 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
       return falling_from_one(std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)}));
     case Pattern::spiral1:
       return spiral1(q, space.arms);
+    case Pattern::mandel:
+      return mandel(q, space.iterations);
   }
   return 0.0;
 }

@@ -15,6 +15,7 @@
 //   planar    max(0, 1 - |y|); spherical max(0, 1 - |p|); cylindrical max(0, 1 - |(x, z)|);
 //   boxed     max(0, 1 - max(|x|, |y|, |z|))
 //   spiral1 N r + N (atan2(y, x) / 2 pi + 1/4) + z, r = |(x, y)|; triangle wave by default
+//   mandel N  escape time of z -> z^2 + (x + iy) from z = x + iy, over N; 1 inside the set
 //   dents     noise^3, bumps/spotted/bozo: noise
 // frequency and phase: v -> wave(v * frequency + phase) with wave = fract (triangle wave for
 // marble, wood and spiral1): gradient x frequency 2 phase 0.3 gives 0.4 at x = 0.05.

@@ -37,6 +37,7 @@ enum class Pattern {
   cylindrical,  // 1 on the y axis falling to 0 at distance 1
   boxed,        // 1 at the origin falling to 0 on the cube's faces at |x|, |y|, |z| = 1
   spiral1,      // `arms` spirals winding about z like a screw
+  mandel,       // the Mandelbrot set in the x-y plane: escape time / `iterations`
 };
 
 // A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
@@ -65,6 +66,7 @@ struct PatternSpace {
   Pattern pattern = Pattern::solid;
   Vec3 gradient_axis{1.0, 0.0, 0.0};  // gradient only
   double arms = 1.0;                  // spiral1 only: its number of arms
+  int iterations = 0;                 // mandel only: the most iterations
   Turbulence turbulence;
   double frequency = 1.0;  // value -> fract(value * frequency + phase)
   double phase = 0.0;

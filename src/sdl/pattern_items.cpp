@@ -24,19 +24,19 @@ constexpr PatternKeyword kPatterns[] = {
     {"bumps", scene::Pattern::bumps},     {"dents", scene::Pattern::dents},
     {"planar", scene::Pattern::planar},   {"spherical", scene::Pattern::spherical},
     {"cylindrical", scene::Pattern::cylindrical}, {"boxed", scene::Pattern::boxed},
-    {"spiral1", scene::Pattern::spiral1},
+    {"spiral1", scene::Pattern::spiral1}, {"mandel", scene::Pattern::mandel},
 };
 
 constexpr std::string_view kPatternNames[] = {
     "checker", "gradient", "marble",  "wood",    "granite", "agate",    "bozo",  "radial",
     "onion",   "leopard",  "spotted", "ripples", "waves",   "wrinkles", "bumps", "dents",
-    "planar",  "spherical", "cylindrical", "boxed", "spiral1"};
+    "planar",  "spherical", "cylindrical", "boxed", "spiral1", "mandel"};
 
 // POV-Ray patterns we know by name, so that they get "not supported yet" rather than
 // "unexpected".
 constexpr std::string_view kUnsupportedPatterns[] = {
     "brick",      "hexagon",      "crackle",      "cells",         "spiral2",
-    "mandel",     "julia",        "image_map",    "bump_map",      "function",    "pigment_pattern",
+    "julia",        "image_map",    "bump_map",      "function",    "pigment_pattern",
     "object",     "density_file", "quilted",      "facets",
     "average",      "tiling",        "pavement",    "square",
     "triangular", "slope",        "aoi",          "image_pattern", "magnet",
@@ -73,6 +73,14 @@ std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::Patte
       const SourceLoc loc = parser.peek().loc;
       space.arms = float_param(parser, "the number of spiral1's arms");
       if (!std::isfinite(space.arms)) parser.fail(loc, "spiral1's number of arms must be finite");
+    }
+    if (keyword.pattern == scene::Pattern::mandel) {
+      const SourceLoc loc = parser.peek().loc;
+      space.iterations = int_param(parser, "mandel's number of iterations");
+      if (space.iterations < 1) {
+        parser.fail(loc, "mandel needs at least 1 iteration, found " +
+                             std::to_string(space.iterations));
+      }
     }
     return keyword.pattern;
   }

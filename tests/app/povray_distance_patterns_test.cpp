@@ -1,4 +1,4 @@
-// The patterns made of a distance (planar, spherical, cylindrical, boxed) and spiral1, as
+// The patterns made of a distance (planar, spherical, cylindrical, boxed), spiral1 and mandel, as
 // pigments with their maps, frequency and phase, and as normals, against the povray binary's
 // pictures. (The normals avoid the seams where a ramp wave wraps and where spiral1's angle
 // does: POV-Ray's normal shows a line there, which convray's does not draw alike.)
@@ -35,6 +35,18 @@ TEST_F(PovRayDistancePatterns, PigmentsAsPovRay) {
       "sphere { <-2, 2.6, 0>, 0.6 pigment { spiral1 2 ramp_wave frequency 2 " + map +
       "scale 0.5 translate <-2, 2.6, 0> } }\n";
   EXPECT_GE(compare("distance_pigments", scene), 40.0) << convray_err;
+}
+
+TEST_F(PovRayDistancePatterns, MandelAsPovRay) {
+  SKIP_WITHOUT_POVRAY();
+  const std::string scene =
+      kSetting +
+      "plane { z, 1 pigment { mandel 40 color_map { [0 rgb 0] [0.3 rgb <1, 0.5, 0>]\n"
+      "  [1 rgb <0.2, 0.3, 1>] } translate 0.5 * x scale 1.5 translate y } }\n"
+      "sphere { <1.8, 1, -1>, 0.8 pigment { rgb 0.9 } normal { mandel 30, 0.8 scale 0.5\n"
+      "  translate <1.8, 1, 0> } }\n";
+  // The pigment is POV-Ray's pixel for pixel; the bumps differ at a few escape-time steps.
+  EXPECT_GE(compare("mandel", scene), 35.0) << convray_err;
 }
 
 TEST_F(PovRayDistancePatterns, NormalsAsPovRay) {

@@ -130,6 +130,16 @@ TEST(Patterns, Spiral1WindsItsArmsAboutZ) {
   EXPECT_NEAR(pattern_value(spiral, Vec3(-0.125, 0.875, -0.2)), 0.54192, 5e-5);
 }
 
+TEST(Patterns, MandelIsTheEscapeTimeOverTheIterations) {
+  // POV-Ray 3.7's values for mandel 50 (its 16-bit renders).
+  scene::PatternSpace mandel = space_of(Pattern::mandel);
+  mandel.iterations = 50;
+  EXPECT_NEAR(pattern_value(mandel, Vec3(-0.9875, 0.7375, 0)), 0.04, 1e-5);
+  EXPECT_NEAR(pattern_value(mandel, Vec3(0.35, 0.05, 3)), 0.16, 1e-5);
+  EXPECT_NEAR(pattern_value(mandel, Vec3(-1.325, 1.475, 0)), 0.0, 1e-5);
+  EXPECT_EQ(pattern_value(mandel, Vec3(-0.1, 0.2, 0)), 1.0);  // inside: 1, not wrapped to 0
+}
+
 TEST(Patterns, DentsAreCubedBumps) {
   const Vec3 p(0.3, 1.7, -2.2);
   const double bumps = pattern_value(space_of(Pattern::bumps), p);
