@@ -34,6 +34,11 @@ scene::ObjectPtr with_default_texture(Parser& parser, scene::ObjectPtr object);
 // An object placed in the scene at `at`: with the default texture if it has none; an error if
 // it is, or contains, a declared stand-in for an unsupported object (`sor`, `text`, ...).
 scene::ObjectPtr placed_object(Parser& parser, scene::ObjectPtr object, const SourceLoc& at);
+// The light_sources inside a placed object's CSGs (at any depth), placed as the CSGs are,
+// appended to the scene's lights.
+void add_csg_lights(const scene::Object& object, scene::Scene& scene);
+// A light moved by `transform`: its location, point_at and area axes.
+scene::Light placed_light(scene::Light light, const scene::Transform& transform);
 
 scene::ObjectPtr parse_sphere(Parser& parser);
 scene::ObjectPtr parse_box(Parser& parser);
