@@ -120,6 +120,7 @@ int checker_block(const Vec3& q) {
 double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
   switch (space.pattern) {
     case Pattern::solid:
+    case Pattern::average:  // pigment.cpp mixes an average's pigments itself
       return 0.0;
     case Pattern::checker:
       return checker_block(q);

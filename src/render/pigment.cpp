@@ -99,9 +99,28 @@ Color lookup_pigment_map(const std::vector<scene::PigmentMapEntry>& map, double 
   return scene::mix(colour(low), colour(high), (value - low.value) / span);
 }
 
+// An average: the pigments mixed by weight / sum of the weights (all five channels).
+Color average_pigments(const std::vector<scene::PigmentMapEntry>& map, const Vec3& world_point) {
+  double total = 0.0;
+  for (const scene::PigmentMapEntry& entry : map) total += entry.value;
+  Color sum{Vec3(0.0), 0.0, 0.0};
+  if (!(total > 0.0)) return sum;
+  for (const scene::PigmentMapEntry& entry : map) {
+    const Color c = evaluate_pigment(*entry.pigment, world_point);
+    const double w = entry.value / total;
+    sum.rgb += w * c.rgb;
+    sum.filter += w * c.filter;
+    sum.transmit += w * c.transmit;
+  }
+  return sum;
+}
+
 }  // namespace
 
 Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& world_point) {
+  if (pigment.space.pattern == Pattern::average) {
+    return average_pigments(pigment.pigment_map, world_point);
+  }
   if (!pigment.pigment_map.empty() && pigment.space.pattern != Pattern::solid) {
     return lookup_pigment_map(pigment.pigment_map, pattern_value(pigment.space, world_point),
                               world_point);

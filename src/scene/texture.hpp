@@ -38,6 +38,7 @@ enum class Pattern {
   boxed,        // 1 at the origin falling to 0 on the cube's faces at |x|, |y|, |z| = 1
   spiral1,      // `arms` spirals winding about z like a screw
   mandel,       // the Mandelbrot set in the x-y plane: escape time / `iterations`
+  average,      // pigments only: the pigment_map's pigments mixed by their weights
 };
 
 // A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
@@ -90,7 +91,7 @@ struct Pigment {
   // checker (and other block patterns): the listed colours, in order.
   std::vector<Color> block_colors;
   // Set: the pattern's value picks (between two entries: mixes) whole pigments instead of
-  // colours; color_map is not used.
+  // colours; color_map is not used. For `average` the values are the pigments' weights.
   std::vector<PigmentMapEntry> pigment_map;
 };
 

@@ -246,6 +246,22 @@ TEST(ItemsTexture, TextureMapsAverageAndTiles) {
   EXPECT_EQ(blocks.textures[1]->pigment.color.rgb, Vec3(1, 0, 0));
 }
 
+TEST(ItemsTexture, AveragePigmentWeightsInAnyOrder) {
+  const auto result = parse(
+      "sphere { 0, 1 pigment { average pigment_map { [3 rgb x] [rgb y] [0.5 rgb z] } } }");
+  const scene::Pigment& pigment = texture_of(result).pigment;
+  EXPECT_EQ(pigment.space.pattern, scene::Pattern::average);
+  ASSERT_EQ(pigment.pigment_map.size(), 3u);
+  EXPECT_EQ(pigment.pigment_map[0].value, 3.0);
+  EXPECT_EQ(pigment.pigment_map[1].value, 1.0);
+  EXPECT_EQ(pigment.pigment_map[2].value, 0.5);
+  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { average } }", 1, 15,
+                         "an average pigment needs a pigment_map"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { average pigment_map { [-2 rgb 1] } } }", 1, 48,
+                         "must not be negative"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 normal { average } }", 1, 24, "not supported yet"));
+}
+
 TEST(ItemsTexture, TextureMapErrors) {
   EXPECT_TRUE(fails_with("sphere { 0, 1 texture { gradient x } }", 1, 15,
                          "this texture's pattern picks no textures"));
