@@ -13,6 +13,7 @@
 #include "render/pigment.hpp"
 #include "render/sample_hash.hpp"
 #include "render/shadows.hpp"
+#include "render/texture_map.hpp"
 
 namespace convray::render {
 
@@ -89,14 +90,24 @@ Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState&
                        RenderStats& stats) const {
   HitPoint hit;
   hit.point = ray.at(crossing.t);
-  const scene::Texture& texture =
-      crossing.surface && crossing.surface->texture
-          ? texture_at(*crossing.surface->texture, hit.point)
-          : fallback_texture();
+  const scene::Texture& texture = crossing.surface && crossing.surface->texture
+                                      ? *crossing.surface->texture
+                                      : fallback_texture();
   hit.view = ray.direction;
   hit.surface = crossing.surface;
   hit.entering = glm::dot(ray.direction, crossing.normal) < 0.0;
-  return shade_layer(texture, crossing.normal, hit, state, stats);
+  return shade_texture(texture, crossing.normal, hit, state, stats);
+}
+
+Vec3 Integrator::shade_texture(const scene::Texture& texture, const Vec3& outward,
+                               const HitPoint& hit, const RayState& state,
+                               RenderStats& stats) const {
+  Vec3 color(0.0);
+  for_each_texture(texture, hit.point, 1.0, [&](const scene::Texture& plain, double weight) {
+    HitPoint own = hit;
+    color += weight * shade_layer(plain, outward, own, state, stats);
+  });
+  return color;
 }
 
 Vec3 Integrator::shade_layer(const scene::Texture& texture, const Vec3& outward, HitPoint& hit,
@@ -114,8 +125,7 @@ Vec3 Integrator::shade_layer(const scene::Texture& texture, const Vec3& outward,
   if (!pigment.opaque()) {
     const Vec3 factor = pigment.filter * pigment.rgb + Vec3(pigment.transmit);
     if (texture.below) {
-      color += factor * shade_layer(texture_at(*texture.below, hit.point), outward, hit, state,
-                                    stats);
+      color += factor * shade_texture(*texture.below, outward, hit, state, stats);
     } else {
       color += factor * transmitted_light(hit, factor, state, stats);
     }

@@ -56,6 +56,10 @@ class Integrator {
              RenderStats& stats) const;
   Vec3 shade(const implicit::Ray& ray, const geometry::Crossing& crossing, const RayState& state,
              RenderStats& stats) const;
+  // A texture at the hit: the plain textures its texture patterns pick there (texture_map.hpp),
+  // each shaded as a layer, added by weight.
+  Vec3 shade_texture(const scene::Texture& texture, const Vec3& outward, const HitPoint& hit,
+                     const RayState& state, RenderStats& stats) const;
   // One layer of a (possibly layered) texture at the hit: its own light, and what shows
   // through its pigment: the layer below, or the light beyond the surface.
   Vec3 shade_layer(const scene::Texture& texture, const Vec3& outward, HitPoint& hit,

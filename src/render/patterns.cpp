@@ -73,6 +73,32 @@ double agate(const Vec3& q) {
   return std::pow(0.5 * (1.0 + std::sin(2.0 * kPi * (q.z + warp))), 0.77);
 }
 
+// 1 at the centre falling linearly to 0 at distance 1, 0 beyond: planar, spherical,
+// cylindrical and boxed, each with its own distance.
+double falling_from_one(double distance) { return std::max(0.0, 1.0 - distance); }
+
+// POV-Ray's spiral1: the distance from the z axis plus the arms times the turn about it
+// (counted from -y, counter-clockwise), plus z, wrapped by the wave (measured against the
+// povray binary: spiral1 1 ramp_wave gives fract(r + theta / 2 pi + 1/4 + z)).
+double spiral1(const Vec3& q, double arms) {
+  const double turn = std::atan2(q.y, q.x) / (2.0 * kPi) + 0.25;
+  return std::hypot(q.x, q.y) + arms * turn + q.z;
+}
+
+// POV-Ray's mandel: z = c = x + iy, then z = z^2 + c until |z|^2 > 4; the value is the
+// number of steps taken before the one that escaped over `iterations`, 1 inside the set
+// (matches the povray binary's 16-bit renders pixel for pixel at 7, 20 and 50 iterations).
+double mandel(const Vec3& q, int iterations) {
+  double zr = q.x, zi = q.y;
+  for (int k = 0; k < iterations; ++k) {
+    const double r = zr * zr - zi * zi + q.x;
+    zi = 2.0 * zr * zi + q.y;
+    zr = r;
+    if (zr * zr + zi * zi > 4.0) return double(k) / iterations;
+  }
+  return 1.0;
+}
+
 double gradient(const Vec3& q, const Vec3& axis) {
   const double length = glm::length(axis);
   return length > 0.0 ? glm::dot(q, axis) / length : 0.0;
@@ -94,6 +120,7 @@ int checker_block(const Vec3& q) {
 double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
   switch (space.pattern) {
     case Pattern::solid:
+    case Pattern::average:  // pigment.cpp mixes an average's pigments itself
       return 0.0;
     case Pattern::checker:
       return checker_block(q);
@@ -127,6 +154,18 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
       return waves(q, space.frequency, space.phase);
     case Pattern::wrinkles:
       return fractal_abs_noise(q, 10);
+    case Pattern::planar:
+      return falling_from_one(std::abs(q.y));
+    case Pattern::spherical:
+      return falling_from_one(glm::length(q));
+    case Pattern::cylindrical:
+      return falling_from_one(std::hypot(q.x, q.z));
+    case Pattern::boxed:
+      return falling_from_one(std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)}));
+    case Pattern::spiral1:
+      return spiral1(q, space.arms);
+    case Pattern::mandel:
+      return mandel(q, space.iterations);
   }
   return 0.0;
 }
@@ -151,7 +190,8 @@ double shaped_by_wave(const scene::PatternSpace& space, double v) {
   using scene::Wave;
   Wave wave = space.wave;
   if (wave == Wave::pattern_default) {
-    const bool triangular = space.pattern == Pattern::marble || space.pattern == Pattern::wood;
+    const bool triangular = space.pattern == Pattern::marble || space.pattern == Pattern::wood ||
+                            space.pattern == Pattern::spiral1;
     wave = triangular ? Wave::triangle : Wave::ramp;
   }
   // The shapes as the povray binary draws them over a gradient (tests/render).

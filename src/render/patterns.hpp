@@ -12,9 +12,13 @@
 //   checker   floor(x) + floor(y) + floor(z) odd -> the second colour; POV-Ray adds a
 //             tolerance between 1e-10 and 1e-9 before flooring (a plane at y = 0 gets the
 //             colour of y = +0)
+//   planar    max(0, 1 - |y|); spherical max(0, 1 - |p|); cylindrical max(0, 1 - |(x, z)|);
+//   boxed     max(0, 1 - max(|x|, |y|, |z|))
+//   spiral1 N r + N (atan2(y, x) / 2 pi + 1/4) + z, r = |(x, y)|; triangle wave by default
+//   mandel N  escape time of z -> z^2 + (x + iy) from z = x + iy, over N; 1 inside the set
 //   dents     noise^3, bumps/spotted/bozo: noise
 // frequency and phase: v -> wave(v * frequency + phase) with wave = fract (triangle wave for
-// marble and wood): gradient x frequency 2 phase 0.3 gives 0.4 at x = 0.05.
+// marble, wood and spiral1): gradient x frequency 2 phase 0.3 gives 0.4 at x = 0.05.
 // Noise-based patterns (bozo, spotted, granite, agate, bumps, dents, wrinkles, ripples,
 // waves) use our own noise and formulas: alike in character, not pixel for pixel.
 #include "scene/texture.hpp"

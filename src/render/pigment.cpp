@@ -79,18 +79,6 @@ const std::vector<ColorMapEntry>& default_color_map(Pattern pattern) {
   }
 }
 
-const scene::Texture& texture_at(const scene::Texture& texture, const Vec3& world_point) {
-  static const scene::Texture kDefault = scene::default_texture();
-  const scene::Texture* at = &texture;
-  while (at->blocks) {
-    const scene::TextureBlocks& blocks = *at->blocks;
-    const size_t block = size_t(int(pattern_value(blocks.space, world_point)));
-    if (block >= blocks.textures.size() || !blocks.textures[block]) return kDefault;
-    at = blocks.textures[block].get();
-  }
-  return *at;
-}
-
 namespace {
 
 // The pigments of a pigment_map at `value`, as a colour map mixes its colours.
@@ -111,9 +99,28 @@ Color lookup_pigment_map(const std::vector<scene::PigmentMapEntry>& map, double 
   return scene::mix(colour(low), colour(high), (value - low.value) / span);
 }
 
+// An average: the pigments mixed by weight / sum of the weights (all five channels).
+Color average_pigments(const std::vector<scene::PigmentMapEntry>& map, const Vec3& world_point) {
+  double total = 0.0;
+  for (const scene::PigmentMapEntry& entry : map) total += entry.value;
+  Color sum{Vec3(0.0), 0.0, 0.0};
+  if (!(total > 0.0)) return sum;
+  for (const scene::PigmentMapEntry& entry : map) {
+    const Color c = evaluate_pigment(*entry.pigment, world_point);
+    const double w = entry.value / total;
+    sum.rgb += w * c.rgb;
+    sum.filter += w * c.filter;
+    sum.transmit += w * c.transmit;
+  }
+  return sum;
+}
+
 }  // namespace
 
 Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& world_point) {
+  if (pigment.space.pattern == Pattern::average) {
+    return average_pigments(pigment.pigment_map, world_point);
+  }
   if (!pigment.pigment_map.empty() && pigment.space.pattern != Pattern::solid) {
     return lookup_pigment_map(pigment.pigment_map, pattern_value(pigment.space, world_point),
                               world_point);

@@ -29,11 +29,6 @@ scene::Color lookup_color_map(const std::vector<scene::ColorMapEntry>& map, doub
 // The map a pattern uses when the scene gives none.
 const std::vector<scene::ColorMapEntry>& default_color_map(scene::Pattern pattern);
 
-// The texture that applies at a world point: `texture` itself, or the block of a block
-// texture pattern (checker) that the point lies in, as POV-Ray picks it (a block without a
-// texture of its own: POV-Ray's default texture).
-const scene::Texture& texture_at(const scene::Texture& texture, const Vec3& world_point);
-
 // The pigment's colour at a world point.
 scene::Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& world_point);
 

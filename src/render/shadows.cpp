@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/pigment.hpp"
+#include "render/texture_map.hpp"
 
 namespace convray::render {
 
@@ -14,17 +15,27 @@ constexpr int kMaxShadowLayers = 256;
 
 }  // namespace
 
+namespace {
+
+// Light passes a layered texture through every layer; the textures a texture pattern picks
+// pass it by their weights.
+Vec3 texture_transmittance(const scene::Texture& texture, const Vec3& point) {
+  Vec3 passed(0.0);
+  for_each_texture(texture, point, 1.0, [&](const scene::Texture& layer, double weight) {
+    const scene::Color color = evaluate_pigment(layer.pigment, point);
+    if (color.opaque()) return;
+    Vec3 through = color.filter * color.rgb + Vec3(color.transmit);
+    if (layer.below) through *= texture_transmittance(*layer.below, point);
+    passed += weight * through;
+  });
+  return passed;
+}
+
+}  // namespace
+
 Vec3 surface_transmittance(const geometry::SurfaceInfo& surface, const Vec3& point) {
   if (!surface.texture) return Vec3(0.0);
-  // Light passes a layered texture through every layer.
-  Vec3 passed(1.0);
-  for (const scene::Texture* layer = &texture_at(*surface.texture, point); layer != nullptr;
-       layer = layer->below ? &texture_at(*layer->below, point) : nullptr) {
-    const scene::Color color = evaluate_pigment(layer->pigment, point);
-    if (color.opaque()) return Vec3(0.0);
-    passed *= color.filter * color.rgb + Vec3(color.transmit);
-  }
-  return passed;
+  return texture_transmittance(*surface.texture, point);
 }
 
 Vec3 shadow_transmittance(const geometry::World& world, const geometry::Ray& ray, double tmin,

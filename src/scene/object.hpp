@@ -140,9 +140,14 @@ struct Prism {
 };
 
 enum class CsgOperation { union_, intersection, difference, merge };
+struct Light;  // scene.hpp
+
 struct Csg {
   CsgOperation operation = CsgOperation::union_;
   std::vector<ObjectPtr> children;  // in order; difference: first minus the rest
+  // light_sources written among the members, in the CSG's own space: POV-Ray places them
+  // with the CSG (the parser adds them to the scene's lights where the object is placed).
+  std::vector<std::shared_ptr<const Light>> lights = {};
 };
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,

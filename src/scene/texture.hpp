@@ -32,6 +32,13 @@ enum class Pattern {
   wrinkles,
   bumps,
   dents,
+  planar,       // 1 at y = 0 falling to 0 at |y| = 1
+  spherical,    // 1 at the origin falling to 0 at |p| = 1
+  cylindrical,  // 1 on the y axis falling to 0 at distance 1
+  boxed,        // 1 at the origin falling to 0 on the cube's faces at |x|, |y|, |z| = 1
+  spiral1,      // `arms` spirals winding about z like a screw
+  mandel,       // the Mandelbrot set in the x-y plane: escape time / `iterations`
+  average,      // pigments only: the pigment_map's pigments mixed by their weights
 };
 
 // A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
@@ -52,13 +59,15 @@ struct Turbulence {
 };
 
 // POV-Ray's wave types: how a pattern's value v = value * frequency + phase becomes the
-// value looked up in the map. `pattern_default`: triangle for marble and wood, ramp otherwise.
+// value looked up in the map. `pattern_default`: triangle for marble, wood and spiral1, ramp otherwise.
 enum class Wave { pattern_default, ramp, triangle, sine, scallop, cubic, poly };
 
 // What every pattern shares: where it is evaluated and how its value is reshaped.
 struct PatternSpace {
   Pattern pattern = Pattern::solid;
   Vec3 gradient_axis{1.0, 0.0, 0.0};  // gradient only
+  double arms = 1.0;                  // spiral1 only: its number of arms
+  int iterations = 0;                 // mandel only: the most iterations
   Turbulence turbulence;
   double frequency = 1.0;  // value -> fract(value * frequency + phase)
   double phase = 0.0;
@@ -82,7 +91,7 @@ struct Pigment {
   // checker (and other block patterns): the listed colours, in order.
   std::vector<Color> block_colors;
   // Set: the pattern's value picks (between two entries: mixes) whole pigments instead of
-  // colours; color_map is not used.
+  // colours; color_map is not used. For `average` the values are the pigments' weights.
   std::vector<PigmentMapEntry> pigment_map;
 };
 
@@ -113,20 +122,26 @@ struct Interior {
 struct Texture;
 using TexturePtr = std::shared_ptr<const Texture>;
 
-// POV-Ray's block texture patterns (`texture { checker texture { A } texture { B } }`): at
-// each point the pattern's block number picks one whole texture, never a blend of two.
-struct TextureBlocks {
-  PatternSpace space;                // checker
-  std::vector<TexturePtr> textures;  // by block number
+// POV-Ray's texture patterns: at each point a pattern picks whole textures.
+//   blocks   `checker texture { A } texture { B }`: the block number picks one texture
+//   map      `PATTERN texture_map { [v T] ... }`: as a colour map picks colours; between two
+//            entries both textures are shaded and their colours mixed
+//   average  `average texture_map { [w T] ... }`: every texture, weighted by w / sum of w
+struct TextureMap {
+  enum class Kind { blocks, map, average };
+  Kind kind = Kind::blocks;
+  PatternSpace space;                // blocks and map: the pattern
+  std::vector<double> values;        // map: the entries' values, ascending; average: weights
+  std::vector<TexturePtr> textures;  // blocks: by block number; map, average: by entry
 };
 
 struct Texture {
   Pigment pigment;
   Finish finish;
   Normal normal;
-  // Set: the texture is made of these blocks, and its own pigment, finish and normal are
-  // not used.
-  std::shared_ptr<const TextureBlocks> blocks;
+  // Set: the texture is this pattern of textures, and its own pigment, finish and normal
+  // are not used.
+  std::shared_ptr<const TextureMap> map;
   // Layered textures (`texture { A } texture { B }`: the later one lies on top): the layer
   // under this one, seen where this one's pigment lets light through; null for the last.
   TexturePtr below;

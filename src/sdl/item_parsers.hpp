@@ -34,6 +34,11 @@ scene::ObjectPtr with_default_texture(Parser& parser, scene::ObjectPtr object);
 // An object placed in the scene at `at`: with the default texture if it has none; an error if
 // it is, or contains, a declared stand-in for an unsupported object (`sor`, `text`, ...).
 scene::ObjectPtr placed_object(Parser& parser, scene::ObjectPtr object, const SourceLoc& at);
+// The light_sources inside a placed object's CSGs (at any depth), placed as the CSGs are,
+// appended to the scene's lights.
+void add_csg_lights(const scene::Object& object, scene::Scene& scene);
+// A light moved by `transform`: its location, point_at and area axes.
+scene::Light placed_light(scene::Light light, const scene::Transform& transform);
 
 scene::ObjectPtr parse_sphere(Parser& parser);
 scene::ObjectPtr parse_box(Parser& parser);
@@ -58,6 +63,15 @@ scene::ObjectPtr parse_convolution(Parser& parser);
 // `start` (a copy of what the item modifies: the object's current pigment, the defaults, ...);
 // a declared identifier first in the block replaces it.
 scene::Texture parse_texture(Parser& parser, const scene::Texture& start);
+// What a texture { } holds, from the scene's default texture up to the `closing` token (not
+// taken): a texture_map entry or a tiles { } block.
+scene::Texture parse_texture_body(Parser& parser, const std::string& closing);
+// A texture pattern (parse_texture_map.cpp): `checker texture {A} texture {B}`, `tiles { A }
+// tile2 { B }`, `PATTERN [modifiers] texture_map { [v T] ... }`, `average texture_map
+// { [w T] ... }`, into `texture`; false when the next token starts none.
+bool parse_texture_pattern(Parser& parser, scene::Texture& texture);
+// At the end of a texture: a pattern that still lacks its textures is an error at `loc`.
+void check_texture_pattern(Parser& parser, const scene::Texture& texture, const SourceLoc& loc);
 scene::Pigment parse_pigment(Parser& parser, const scene::Pigment& start);
 scene::Finish parse_finish(Parser& parser, const scene::Finish& start);
 scene::Normal parse_normal(Parser& parser, const scene::Normal& start);

@@ -164,6 +164,7 @@ void parse_statement(Parser& parser, scene::Scene& scene) {
   } else if (at_object(parser)) {
     const SourceLoc loc = parser.peek().loc;
     scene.objects.push_back(placed_object(parser, parse_object(parser), loc));
+    add_csg_lights(*scene.objects.back(), scene);
   } else if (at_word(parser, "camera")) {
     scene.camera = parse_camera(parser);
   } else if (at_word(parser, "light_source")) {

@@ -20,12 +20,12 @@ void move_pigment(scene::Pigment& pigment, const scene::Transform& transform) {
 void move_texture(scene::Texture& texture, const scene::Transform& transform) {
   move_pigment(texture.pigment, transform);
   texture.normal.space.transform = texture.normal.space.transform.then(transform);
-  if (texture.blocks) {
-    // The blocks and the textures in them move together.
-    auto blocks = std::make_shared<scene::TextureBlocks>(*texture.blocks);
-    blocks->space.transform = blocks->space.transform.then(transform);
-    for (scene::TexturePtr& block : blocks->textures) block = moved_texture(block, transform);
-    texture.blocks = std::move(blocks);
+  if (texture.map) {
+    // The pattern and the textures it picks move together.
+    auto map = std::make_shared<scene::TextureMap>(*texture.map);
+    map->space.transform = map->space.transform.then(transform);
+    for (scene::TexturePtr& entry : map->textures) entry = moved_texture(entry, transform);
+    texture.map = std::move(map);
   }
   if (texture.below) texture.below = moved_texture(texture.below, transform);
 }

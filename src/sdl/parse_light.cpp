@@ -130,6 +130,16 @@ void parse_light_item(Parser& parser, Block& block, LightItems& items) {
 
 }  // namespace
 
+scene::Light placed_light(scene::Light light, const scene::Transform& transform) {
+  light.position = transform.point(light.position);
+  light.point_at = transform.point(light.point_at);
+  if (light.area) {
+    light.area->axis1 = transform.vector(light.area->axis1);
+    light.area->axis2 = transform.vector(light.area->axis2);
+  }
+  return light;
+}
+
 scene::Light parse_light_modifiers(Parser& parser, Block& block, const scene::Light& start) {
   LightItems items = items_of(start);
   while (block.more()) parse_light_item(parser, block, items);

@@ -156,6 +156,7 @@ void parse_top_level_object(Parser& parser, scene::Scene& scene) {
     base = *object;
   }
   scene.objects.push_back(placed_object(parser, parse_object_body(parser, block, base), loc));
+  add_csg_lights(*scene.objects.back(), scene);
 }
 
 scene::ObjectPtr parse_unsupported_object_as_empty(Parser& parser) {

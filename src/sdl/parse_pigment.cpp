@@ -100,12 +100,18 @@ ColorMap parse_color_map(Parser& parser) {
 
 namespace {
 
-std::vector<scene::PigmentMapEntry> parse_pigment_map(Parser& parser);
+std::vector<scene::PigmentMapEntry> parse_pigment_map(Parser& parser, bool average);
 
 // One item of a pigment's body; false when the next token starts none.
 bool parse_pigment_item(Parser& parser, scene::Pigment& pigment) {
   if (auto transform = parse_transform_modifier(parser)) {
     move_pigment(pigment, *transform);
+  } else if (accept_word(parser, "average")) {
+    // `average pigment_map { [w P] ... }`: the pigments mixed by their weights.
+    pigment.space.pattern = scene::Pattern::average;
+    pigment.color_map.clear();
+    pigment.block_colors.clear();
+    pigment.pigment_map.clear();
   } else if (auto pattern = parse_pattern_keyword(parser, pigment.space)) {
     // A new pattern replaces the colours of the one it is given over.
     pigment.color_map.clear();
@@ -116,7 +122,8 @@ bool parse_pigment_item(Parser& parser, scene::Pigment& pigment) {
     pigment.color_map = parse_color_map(parser);
     pigment.pigment_map.clear();
   } else if (at_word(parser, "pigment_map")) {
-    pigment.pigment_map = parse_pigment_map(parser);
+    pigment.pigment_map =
+        parse_pigment_map(parser, pigment.space.pattern == scene::Pattern::average);
     pigment.color_map.clear();
     // The entries live in the pattern's space: the transforms written before the map move
     // them too (those after it do, through move_pigment), as the povray binary draws them.
@@ -140,13 +147,19 @@ bool parse_pigment_item(Parser& parser, scene::Pigment& pigment) {
 }
 
 // `pigment_map { [VALUE PIGMENT_BODY] ... }`: each entry is what a pigment { } holds (a
-// colour, a declared pigment and its modifiers, a pattern ...).
-std::vector<scene::PigmentMapEntry> parse_pigment_map(Parser& parser) {
+// colour, a declared pigment and its modifiers, a pattern ...). An average's values are
+// weights: in any order, and 1 where left out.
+std::vector<scene::PigmentMapEntry> parse_pigment_map(Parser& parser, bool average) {
   Block block(parser, "pigment_map", take_keyword(parser));
   std::vector<scene::PigmentMapEntry> map;
   while (block.more()) {
     parser.expect("[", "pigment_map");
-    const double value = float_param(parser, "the pigment_map entry's value");
+    const SourceLoc loc = parser.peek().loc;
+    const bool weighted = !average || at_float_start(parser);
+    const double value = weighted ? float_param(parser, "the pigment_map entry's value") : 1.0;
+    if (average && !(value >= 0.0)) {
+      parser.fail(loc, "an average's weight must not be negative, found " + number_text(value));
+    }
     parser.accept_comma();
     scene::Pigment entry;
     if (auto declared = declared_pigment_or_color(parser)) entry = *declared;
@@ -156,7 +169,7 @@ std::vector<scene::PigmentMapEntry> parse_pigment_map(Parser& parser) {
       }
     }
     parser.expect("]", "pigment_map entry");
-    if (!map.empty() && value < map.back().value) {
+    if (!average && !map.empty() && value < map.back().value) {
       // Entries out of order: POV-Ray keeps the list as written; ours must ascend.
       parser.fail(block.loc(), "pigment_map entries must be in ascending order of value");
     }
@@ -179,6 +192,9 @@ scene::Pigment parse_pigment(Parser& parser, const scene::Pigment& start) {
     if (!parse_pigment_item(parser, pigment)) {
       block.unexpected(pattern_words(), kMapWords, pattern_modifier_words());
     }
+  }
+  if (pigment.space.pattern == scene::Pattern::average && pigment.pigment_map.empty()) {
+    parser.fail(loc, "an average pigment needs a pigment_map { [weight pigment] ... }");
   }
   return pigment;
 }

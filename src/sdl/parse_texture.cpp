@@ -1,5 +1,5 @@
-// texture { [T_ID] pigment {} finish {} normal {} [transforms] } and
-// interior { [I_ID] ior f ... }.
+// texture { [T_ID] pigment {} finish {} normal {} [transforms] } (or a texture pattern:
+// parse_texture_map.cpp) and interior { [I_ID] ior f ... }.
 #include "sdl/item_parsers.hpp"
 #include "sdl/pattern_items.hpp"
 
@@ -7,17 +7,31 @@ namespace convray::sdl::items {
 
 namespace {
 
-// `checker texture { A } [,] texture { B }`: the texture becomes those blocks.
-void parse_texture_blocks(Parser& parser, scene::Texture& texture) {
-  auto blocks = std::make_shared<scene::TextureBlocks>();
-  parse_pattern_keyword(parser, blocks->space);
-  for (int k = 0; k < 2 && at_word(parser, "texture"); ++k) {
-    blocks->textures.push_back(
-        std::make_shared<const scene::Texture>(parse_texture(parser, parser.defaults().texture)));
-    parser.accept_comma();
+// One item of a texture's body; false when the next token starts none.
+bool parse_texture_item(Parser& parser, scene::Texture& texture) {
+  if (texture.map && (at_word(parser, "pigment") || at_word(parser, "finish") ||
+                      at_word(parser, "normal"))) {
+    parser.fail_here("a texture made of a texture pattern (texture { checker texture {...} "
+                     "texture {...} }, texture_map) takes no " + parser.peek().text +
+                     " of its own");
   }
-  texture = scene::Texture{};
-  texture.blocks = std::move(blocks);
+  if (at_word(parser, "pigment")) {
+    texture.pigment = parse_pigment(parser, texture.pigment);
+  } else if (at_word(parser, "finish")) {
+    texture.finish = parse_finish(parser, texture.finish);
+  } else if (at_word(parser, "normal")) {
+    texture.normal = parse_normal(parser, texture.normal);
+  } else if (auto transform = parse_transform_modifier(parser)) {
+    move_texture(texture, *transform);
+  } else if (texture.map && at_any_word(parser, pattern_modifier_words())) {
+    // Turbulence and the like bend the texture pattern.
+    scene::TextureMap bent = *texture.map;
+    parse_pattern_modifier(parser, bent.space);
+    texture.map = std::make_shared<const scene::TextureMap>(std::move(bent));
+  } else if (!parse_texture_pattern(parser, texture)) {
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -27,37 +41,26 @@ scene::Texture parse_texture(Parser& parser, const scene::Texture& start) {
   Block block(parser, "texture", loc);
   scene::Texture texture = start;
   if (auto declared = accept_declared<scene::Texture>(parser, "a texture")) texture = *declared;
-  static constexpr std::string_view kWords[] = {"pigment", "finish", "normal", "translate",
-                                                "rotate",  "scale",  "matrix", "transform"};
+  static constexpr std::string_view kWords[] = {"pigment", "finish",  "normal",      "translate",
+                                                "rotate",  "scale",   "matrix",      "transform",
+                                                "average", "tiles",   "texture_map"};
   while (block.more()) {
-    if (texture.blocks && (at_word(parser, "pigment") || at_word(parser, "finish") ||
-                           at_word(parser, "normal"))) {
-      parser.fail_here("a texture made of blocks (texture { checker texture {...} texture "
-                       "{...} }) takes no " + parser.peek().text + " of its own");
-    }
-    if (at_word(parser, "checker")) {
-      parse_texture_blocks(parser, texture);
-    } else if (at_word(parser, "pigment")) {
-      texture.pigment = parse_pigment(parser, texture.pigment);
-    } else if (at_word(parser, "finish")) {
-      texture.finish = parse_finish(parser, texture.finish);
-    } else if (at_word(parser, "normal")) {
-      texture.normal = parse_normal(parser, texture.normal);
-    } else if (auto transform = parse_transform_modifier(parser)) {
-      move_texture(texture, *transform);
-    } else if (texture.blocks && at_any_word(parser, pattern_modifier_words())) {
-      // Turbulence and the like bend the blocks' pattern.
-      scene::TextureBlocks bent = *texture.blocks;
-      parse_pattern_modifier(parser, bent.space);
-      texture.blocks = std::make_shared<const scene::TextureBlocks>(std::move(bent));
-    } else if (at_any_word(parser, pattern_words()) ||
-               at_any_word(parser, unsupported_pattern_words())) {
-      parser.fail_unsupported_here("texture patterns and maps ('" + parser.peek().text +
-                       "' in a texture) are not supported yet by convray");
-    } else {
-      block.unexpected(kWords);
+    if (!parse_texture_item(parser, texture)) block.unexpected(kWords, pattern_words());
+  }
+  check_texture_pattern(parser, texture, loc);
+  return texture;
+}
+
+scene::Texture parse_texture_body(Parser& parser, const std::string& closing) {
+  const SourceLoc loc = parser.peek().loc;
+  scene::Texture texture = parser.defaults().texture;
+  if (auto declared = accept_declared<scene::Texture>(parser, "a texture")) texture = *declared;
+  while (!parser.at(closing)) {
+    if (!parse_texture_item(parser, texture)) {
+      parser.fail_here("unexpected '" + parser.peek().text + "' in a texture");
     }
   }
+  check_texture_pattern(parser, texture, loc);
   return texture;
 }
 

@@ -1,6 +1,7 @@
 #include "sdl/pattern_items.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 
 namespace convray::sdl::items {
@@ -21,19 +22,23 @@ constexpr PatternKeyword kPatterns[] = {
     {"spotted", scene::Pattern::spotted}, {"ripples", scene::Pattern::ripples},
     {"waves", scene::Pattern::waves},     {"wrinkles", scene::Pattern::wrinkles},
     {"bumps", scene::Pattern::bumps},     {"dents", scene::Pattern::dents},
+    {"planar", scene::Pattern::planar},   {"spherical", scene::Pattern::spherical},
+    {"cylindrical", scene::Pattern::cylindrical}, {"boxed", scene::Pattern::boxed},
+    {"spiral1", scene::Pattern::spiral1}, {"mandel", scene::Pattern::mandel},
 };
 
 constexpr std::string_view kPatternNames[] = {
     "checker", "gradient", "marble",  "wood",    "granite", "agate",    "bozo",  "radial",
-    "onion",   "leopard",  "spotted", "ripples", "waves",   "wrinkles", "bumps", "dents"};
+    "onion",   "leopard",  "spotted", "ripples", "waves",   "wrinkles", "bumps", "dents",
+    "planar",  "spherical", "cylindrical", "boxed", "spiral1", "mandel"};
 
 // POV-Ray patterns we know by name, so that they get "not supported yet" rather than
 // "unexpected".
 constexpr std::string_view kUnsupportedPatterns[] = {
-    "brick",      "hexagon",      "crackle",      "cells",         "spiral1",     "spiral2",
-    "mandel",     "julia",        "image_map",    "bump_map",      "function",    "pigment_pattern",
-    "object",     "density_file", "quilted",      "facets",        "cylindrical", "spherical",
-    "boxed",      "planar",       "average",      "tiling",        "pavement",    "square",
+    "brick",      "hexagon",      "crackle",      "cells",         "spiral2",
+    "julia",        "image_map",    "bump_map",      "function",    "pigment_pattern",
+    "object",     "density_file", "quilted",      "facets",
+    "average",      "tiling",        "pavement",    "square",
     "triangular", "slope",        "aoi",          "image_pattern", "magnet",
     "normal_map", "slope_map",    "material_map", "texture_map",   "tiles",       "uv_mapping",
     "warp",       "gradient_map"};
@@ -62,6 +67,19 @@ std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::Patte
       space.gradient_axis = vector_param(parser, "the gradient's axis");
       if (space.gradient_axis == Vec3(0.0)) {
         parser.fail_here("the gradient's axis must not be <0, 0, 0>");
+      }
+    }
+    if (keyword.pattern == scene::Pattern::spiral1) {
+      const SourceLoc loc = parser.peek().loc;
+      space.arms = float_param(parser, "the number of spiral1's arms");
+      if (!std::isfinite(space.arms)) parser.fail(loc, "spiral1's number of arms must be finite");
+    }
+    if (keyword.pattern == scene::Pattern::mandel) {
+      const SourceLoc loc = parser.peek().loc;
+      space.iterations = int_param(parser, "mandel's number of iterations");
+      if (space.iterations < 1) {
+        parser.fail(loc, "mandel needs at least 1 iteration, found " +
+                             std::to_string(space.iterations));
       }
     }
     return keyword.pattern;

@@ -1,4 +1,5 @@
-// pigment_map (whole pigments picked and mixed by a pattern's value, in the pattern's space)
+// pigment_map (whole pigments picked and mixed by a pattern's value, in the pattern's space),
+// average pigment_map (mixed by weight)
 // and checker blocks of pigments, against the povray binary's pictures; also the colours
 // POV-Ray reads one after another without a comma (`checker rgb 1 rgb 0`).
 #include <gtest/gtest.h>
@@ -42,6 +43,18 @@ TEST_F(PovRayPigmentMap, CheckerOfPigmentsAndSkySpheres) {
       "box { <-1, 0, -1>, <1, 1.5, 1> pigment { checker rgb <1, 0, 0> rgbt <0, 0, 1, 0.5>\n"
       "  scale 0.5 } rotate 30 * y }\n";
   EXPECT_GE(compare("checker_pigments", scene), 40.0) << convray_err;
+}
+
+TEST_F(PovRayPigmentMap, AverageMixesThePigmentsByWeight) {
+  SKIP_WITHOUT_POVRAY();
+  const std::string scene =
+      kSetting +
+      "plane { y, 0 pigment { average pigment_map { [gradient x color_map { [0 rgb 0]\n"
+      "  [1 rgb <1, 0.5, 0>] }] [3 checker rgb <0, 0, 1> rgb 1 scale 0.5]\n"
+      "  [0.5 rgbt <0, 1, 0, 0.8>] } scale 2 } }\n"
+      "sphere { <0, 1, 0>, 1 pigment { average translate y pigment_map { [2 Stripes]\n"
+      "  [1 rgb <0.2, 0.3, 0.9>] } } finish { phong 0.5 } }\n";
+  EXPECT_GE(compare("average_pigment", scene), 40.0) << convray_err;
 }
 
 }  // namespace

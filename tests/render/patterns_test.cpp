@@ -103,6 +103,43 @@ TEST(Patterns, LeopardIsTheSquaredMeanOfSines) {
   EXPECT_NEAR(s * s, 0.198, 5e-4);  // POV-Ray 3.7's value there
 }
 
+TEST(Patterns, PlanarSphericalCylindricalAndBoxedFallFromOneToZero) {
+  // Values read from POV-Ray 3.7's 16-bit renders of each pattern on a plane.
+  EXPECT_NEAR(pattern_value(space_of(Pattern::planar), Vec3(-0.625, -0.625, 0)), 0.37501, 5e-5);
+  EXPECT_NEAR(pattern_value(space_of(Pattern::planar), Vec3(3, 0.125, -9)), 0.87500, 5e-5);
+  EXPECT_EQ(pattern_value(space_of(Pattern::planar), Vec3(0, 1.5, 0)), 0.0);
+  EXPECT_NEAR(pattern_value(space_of(Pattern::spherical), Vec3(-0.125, 0.875, 0)), 0.11612, 5e-5);
+  EXPECT_NEAR(pattern_value(space_of(Pattern::cylindrical), Vec3(0.125, 7, 0.125)), 0.82322,
+              5e-5);
+  EXPECT_NEAR(pattern_value(space_of(Pattern::boxed), Vec3(0.125, 0.125, 0.3)), 0.70001, 5e-5);
+  EXPECT_NEAR(pattern_value(space_of(Pattern::boxed), Vec3(-0.625, -0.625, 0.3)), 0.37501, 5e-5);
+  // The centre's 1 is kept, not wrapped to 0.
+  EXPECT_EQ(pattern_value(space_of(Pattern::spherical), Vec3(0)), 1.0);
+}
+
+TEST(Patterns, Spiral1WindsItsArmsAboutZ) {
+  // POV-Ray 3.7's values: spiral1 3 ramp_wave and spiral1 2 (its default triangle wave).
+  scene::PatternSpace spiral = space_of(Pattern::spiral1);
+  spiral.arms = 3.0;
+  spiral.wave = scene::Wave::ramp;
+  EXPECT_NEAR(pattern_value(spiral, Vec3(-0.125, 0.875, 0.3)), 0.75161, 5e-5);
+  EXPECT_NEAR(pattern_value(spiral, Vec3(0.125, 0.125, 0.3)), 0.60177, 5e-5);
+  spiral.arms = 2.0;
+  spiral.wave = scene::Wave::pattern_default;
+  EXPECT_NEAR(pattern_value(spiral, Vec3(-0.625, -0.625, -0.2)), 0.86772, 5e-5);
+  EXPECT_NEAR(pattern_value(spiral, Vec3(-0.125, 0.875, -0.2)), 0.54192, 5e-5);
+}
+
+TEST(Patterns, MandelIsTheEscapeTimeOverTheIterations) {
+  // POV-Ray 3.7's values for mandel 50 (its 16-bit renders).
+  scene::PatternSpace mandel = space_of(Pattern::mandel);
+  mandel.iterations = 50;
+  EXPECT_NEAR(pattern_value(mandel, Vec3(-0.9875, 0.7375, 0)), 0.04, 1e-5);
+  EXPECT_NEAR(pattern_value(mandel, Vec3(0.35, 0.05, 3)), 0.16, 1e-5);
+  EXPECT_NEAR(pattern_value(mandel, Vec3(-1.325, 1.475, 0)), 0.0, 1e-5);
+  EXPECT_EQ(pattern_value(mandel, Vec3(-0.1, 0.2, 0)), 1.0);  // inside: 1, not wrapped to 0
+}
+
 TEST(Patterns, DentsAreCubedBumps) {
   const Vec3 p(0.3, 1.7, -2.2);
   const double bumps = pattern_value(space_of(Pattern::bumps), p);

@@ -256,9 +256,22 @@ TEST(ItemsObject, ClippedByBoundedByAndTheReverse) {
   EXPECT_EQ(other->bounded_by, other->clipped_by[0]);
 }
 
-TEST(ItemsObject, LightInsideCsgIsReportedAsNotSupported) {
-  EXPECT_TRUE(fails_with("union { light_source { 0, 1 } sphere { 0, 1 } }", 1, 9,
-                         "light_source inside union is not supported yet"));
+TEST(ItemsObject, LightsInsideCsgArePlacedWithIt) {
+  // Each placement of the object places its lights: nested CSGs and the object { }'s own
+  // transforms included.
+  const auto result = parse(R"(
+    #declare Lamp = union { light_source { <1, 0, 0>, 1 } sphere { 0, 1 } translate 2 * y }
+    object { Lamp translate 3 * z }
+    union { object { Lamp } light_source { <0, 0, 1>, 1 spotlight point_at <0, 0, 2> }
+      rotate 90 * y })");
+  ASSERT_EQ(result.scene.lights.size(), 3u);
+  expect_near(result.scene.lights[0].position, Vec3(1, 2, 3));
+  expect_near(result.scene.lights[1].position, Vec3(1, 0, 0));   // spotlight first in the union
+  expect_near(result.scene.lights[1].point_at, Vec3(2, 0, 0));
+  expect_near(result.scene.lights[2].position, Vec3(0, 2, -1));  // <1, 2, 0> turned about y
+  EXPECT_EQ(result.scene.objects.size(), 2u);
+  EXPECT_TRUE(fails_with("union { sphere { 0, 1 } sphere { 1, 1 } scale 2 light_source { 0, 1 } }",
+                         1, 49, "light sources must come before"));
 }
 
 TEST(ItemsObject, ArrayElementsNameItems) {

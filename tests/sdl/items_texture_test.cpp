@@ -216,8 +216,67 @@ TEST(ItemsTexture, Errors) {
   EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { bozo color_map { 0 } } }", 1, 42,
                          "expected '[' to start a color_map entry"));
   EXPECT_TRUE(fails_with("sphere { 0, 1 interior { ior -1 } }", 1, 26, "ior must be positive"));
-  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { pigment { rgb 1 } tiles } }", 1, 43,
+  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { pigment { rgb 1 } material_map } }", 1, 43,
                          "not supported yet"));
+}
+
+TEST(ItemsTexture, TextureMapsAverageAndTiles) {
+  const auto mapped = parse(
+      "#declare T = texture { pigment { rgb 1 } }\n"
+      "sphere { 0, 1 texture { gradient y texture_map { [0.2 T] [0.6, pigment { rgb x }] } } }");
+  const scene::TextureMap& map = *texture_of(mapped).map;
+  EXPECT_EQ(map.kind, scene::TextureMap::Kind::map);
+  EXPECT_EQ(map.space.pattern, scene::Pattern::gradient);
+  EXPECT_EQ(map.values, (std::vector<double>{0.2, 0.6}));
+  ASSERT_EQ(map.textures.size(), 2u);
+  EXPECT_EQ(map.textures[1]->pigment.color.rgb, Vec3(1, 0, 0));
+  // An average's weights may be left out (1); tiles { A tile2 B } are checker blocks B, A.
+  const auto average =
+      parse("sphere { 0, 1 texture { average texture_map { [pigment { rgb 1 }] [3 pigment { "
+            "rgb 0 }] } } }");
+  EXPECT_EQ(texture_of(average).map->kind, scene::TextureMap::Kind::average);
+  EXPECT_EQ(texture_of(average).map->values, (std::vector<double>{1.0, 3.0}));
+  const auto tiles = parse(
+      "plane { y, 0 texture { tiles { texture { pigment { rgb x } } tile2 texture { pigment { "
+      "rgb y } } } } }");
+  const scene::TextureMap& blocks = *texture_of(tiles).map;
+  EXPECT_EQ(blocks.kind, scene::TextureMap::Kind::blocks);
+  ASSERT_EQ(blocks.textures.size(), 2u);
+  EXPECT_EQ(blocks.textures[0]->pigment.color.rgb, Vec3(0, 1, 0));
+  EXPECT_EQ(blocks.textures[1]->pigment.color.rgb, Vec3(1, 0, 0));
+}
+
+TEST(ItemsTexture, AveragePigmentWeightsInAnyOrder) {
+  const auto result = parse(
+      "sphere { 0, 1 pigment { average pigment_map { [3 rgb x] [rgb y] [0.5 rgb z] } } }");
+  const scene::Pigment& pigment = texture_of(result).pigment;
+  EXPECT_EQ(pigment.space.pattern, scene::Pattern::average);
+  ASSERT_EQ(pigment.pigment_map.size(), 3u);
+  EXPECT_EQ(pigment.pigment_map[0].value, 3.0);
+  EXPECT_EQ(pigment.pigment_map[1].value, 1.0);
+  EXPECT_EQ(pigment.pigment_map[2].value, 0.5);
+  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { average } }", 1, 15,
+                         "an average pigment needs a pigment_map"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { average pigment_map { [-2 rgb 1] } } }", 1, 48,
+                         "must not be negative"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 normal { average } }", 1, 24, "not supported yet"));
+}
+
+TEST(ItemsTexture, TextureMapErrors) {
+  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { gradient x } }", 1, 15,
+                         "this texture's pattern picks no textures"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { texture_map { [0 pigment { rgb 1 }] } } }", 1,
+                         25, "a texture_map needs a pattern before it"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { bozo texture_map { [0.5 pigment { rgb 1 }] "
+                         "[0.2 pigment { rgb 0 }] } } }",
+                         1, 69, "ascending order"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { average texture_map { [-1 pigment { rgb 1 }] "
+                         "} } }",
+                         1, 48, "must not be negative"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { gradient x texture_map { } } }", 1, 36,
+                         "texture_map has no entries"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 texture { gradient x pigment { rgb 1 } } }", 1, 36,
+                         "takes no pigment of its own"));
 }
 
 }  // namespace
