@@ -166,6 +166,9 @@ CLI::App* add_quick_command(CLI::App& app, QuickArguments& q) {
   quick->add_flag("--stats", q.options.stats,
                   "after the render, print rays, primitives per ray, field evaluations, roots, "
                   "fits, subdivisions, fallbacks, surface memory and the time of each phase");
+  quick->add_flag("--force", q.options.force,
+                  "render even when the image's estimated memory exceeds what this process "
+                  "can have (physical memory, ulimit -v)");
   quick->add_option("-o,--output", q.options.output,
                     "image file: .png 8-bit sRGB, .tif 16-bit sRGB, .exr linear float "
                     "(default quick.png)");
@@ -253,6 +256,8 @@ CLI::App* add_polygonize_command(CLI::App& app, convray::app::PolygonizeOptions&
                 "input otherwise gives an outer and an inner shell)");
   cmd->add_flag("--stats", p.stats, "also print blocks visited and field evaluations");
   cmd->add_flag("--ascii", p.ascii, "PLY and STL as text (default binary)");
+  cmd->add_flag("--force", p.force, "run a lattice pass even when its estimated memory "
+                "exceeds what this process can have (physical memory, ulimit -v)");
   cmd->add_option("-o,--output", p.output, "mesh file to write: .obj .ply .stl (.off)")
       ->required();
   return cmd;
