@@ -11,6 +11,8 @@
 #include "scene/quick_scene.hpp"
 #include "app/command_step.hpp"
 #include "app/short_number.hpp"
+#include "app/size_check.hpp"
+#include "app/usage_error.hpp"
 #include "geometry/implicit_shape.hpp"
 #include "geometry/world.hpp"
 #include "implicit/convolution_surface.hpp"
@@ -145,6 +147,7 @@ void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surf
 void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err, CommandStep& step) {
   // Everything that can be checked before the work starts is checked first.
   render::check_image_destination(o.output);
+  refuse_unless_image_fits(o.width, o.height, "give a smaller --size", o.force);
   if (o.radius) quick_threshold(o, *o.radius);
   if (o.camera && o.look_at) make_camera(camera_view(o, Box3{}));
 
@@ -203,6 +206,9 @@ int run_quick(const QuickOptions& options, std::ostream& out, std::ostream& err)
     return 0;
   } catch (const InputError& e) {
     err << e.what() << "\n";
+    return 2;
+  } catch (const UsageError& e) {
+    err << "convray quick: " << e.what() << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
     return step.out_of_memory(err);

@@ -16,6 +16,7 @@
 #include "app/command_step.hpp"
 #include "app/frame_names.hpp"
 #include "app/object_queries.hpp"
+#include "app/size_check.hpp"
 #include "app/video.hpp"
 #include "geometry/world.hpp"
 #include "implicit/support_cache.hpp"
@@ -184,6 +185,7 @@ void check_before_rendering(const RenderOptions& o) {
     }
   }
   render::check_image_destination(o.output);
+  refuse_unless_image_fits(o.width, o.height, "give a smaller +W and +H", o.force);
   if (!o.video.empty()) check_video_tools(o.video);
 }
 
