@@ -111,7 +111,11 @@ TEST_F(HostileInput, EveryCommandReportsRunningOutOfMemoryWhileReading) {
                        "reading huge.obj");
   expect_out_of_memory(run("polygonize huge.obj --radius 0.25 -o p.obj"), "reading huge.obj");
   expect_out_of_memory(run("distance " + kSoup + " huge.obj"), "reading huge.obj");
-  for (const std::string output : {"s.png", "q.png", "p.obj"}) {
+  // A scene's convolution mesh: the render names the scene it was parsing.
+  std::ofstream(file("huge.pov")) << "camera { location <0, 0, -4> look_at 0 }\n"
+                                     "convolution { radius 0.2 mesh { \"huge.obj\" } }\n";
+  expect_out_of_memory(run("huge.pov +W32 +H24 -o r.png"), "parsing huge.pov");
+  for (const std::string output : {"s.png", "q.png", "p.obj", "r.png"}) {
     EXPECT_FALSE(fs::exists(file(output))) << output;
   }
 }
