@@ -17,6 +17,7 @@
 #include "app/command_info.hpp"
 #include "app/command_polygonize.hpp"
 #include "app/command_quick.hpp"
+#include "app/command_step.hpp"
 #include "app/command_render.hpp"
 #include "app/command_slice.hpp"
 #include "app/render_options.hpp"
@@ -206,6 +207,9 @@ int render_main(const std::vector<std::string>& args) {
   } catch (const convray::InputError& e) {  // a bad line in an INI file: file:line:col
     std::cerr << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {  // the frames are planned here, up to 10^7 of them
+    return convray::app::CommandStep("planning the frames", "give fewer frames (+KFI, +KFF)")
+        .out_of_memory(std::cerr);
   }
   const std::filesystem::path scene(options.scene);
   if (!scene.has_extension() && !std::filesystem::exists(scene)) {

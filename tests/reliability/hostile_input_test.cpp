@@ -160,6 +160,17 @@ TEST_F(HostileInput, JobsThatCannotFitAreRefusedUnlessForced) {
   }
 }
 
+// Ten million frames pass the frame limit, but their plan does not fit under the cap: said
+// when the command line is read, before any frame.
+TEST_F(HostileInput, AnAnimationWhosePlanCannotFitIsReportedBeforeAnyFrame) {
+  const testing::CliRun r =
+      run(kSoupScene + " +KFI1 +KFF9999999 +W32 +H24 --list-frames -o f.png");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err, "convray: out of memory while planning the frames: give fewer frames (+KFI, "
+                   "+KFF)\n");
+  EXPECT_TRUE(r.out.empty());
+}
+
 // Points without a line break: refused at the line instead of read into memory whole.
 TEST_F(HostileInput, FieldRefusesALineLongerThan4096Characters) {
   const testing::CliRun r = run("field --mesh " + kSoup + " --radius 0.25",
