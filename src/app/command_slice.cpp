@@ -11,6 +11,8 @@
 #include <tbb/parallel_for.h>
 
 #include "app/command_step.hpp"
+#include "app/size_check.hpp"
+#include "app/usage_error.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/mesh_field.hpp"
 #include "implicit/threshold.hpp"
@@ -92,6 +94,7 @@ int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
   CommandStep step("reading " + o.mesh_path, kFreeMemory);
   try {
     render::check_image_destination(o.output);  // before the work, not after it
+    refuse_unless_image_fits(o.width, o.height, "give a smaller --size", o.force);
     double threshold = 0.0;
     try {
       threshold = implicit::resolve_threshold(o.strength, o.radius, o.offset, o.threshold);
@@ -135,6 +138,9 @@ int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
     return 0;
   } catch (const InputError& e) {
     err << e.what() << "\n";
+    return 2;
+  } catch (const UsageError& e) {
+    err << "convray slice: " << e.what() << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
     return step.out_of_memory(err);

@@ -368,6 +368,9 @@ int main(int argc, char** argv) {
   slice->add_option("--at", slice_options.at, "the plane's coordinate on that axis")->check(kFinite);
   slice->add_option("--size", slice_size, "image size WIDTHxHEIGHT (default 800x600)");
   slice->add_option("-o,--output", slice_options.output, "image file (.png, .exr, .tif, ...)");
+  slice->add_flag("--force", slice_options.force,
+                  "draw even when the image's estimated memory exceeds what this process can "
+                  "have (physical memory, ulimit -v)");
 
   QuickArguments quick_arguments;
   CLI::App* quick = add_quick_command(app, quick_arguments);

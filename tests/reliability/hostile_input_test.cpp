@@ -129,6 +129,12 @@ TEST_F(HostileInput, JobsThatCannotFitAreRefusedUnlessForced) {
       << r.err;
   EXPECT_NE(r.err.find("give a smaller --size, or --force to try anyway"), std::string::npos);
 
+  r = run("slice " + kSoup + " --radius 0.25 --size 32768x32768 -o s.png");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("convray slice: a 32768x32768 image needs about"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("give a smaller --size, or --force to try anyway"), std::string::npos);
+
   r = run(kSoupScene + " +W32768 +H32768 -o r.png");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("convray: a 32768x32768 image needs about"), std::string::npos) << r.err;
@@ -155,7 +161,7 @@ TEST_F(HostileInput, JobsThatCannotFitAreRefusedUnlessForced) {
   r = run("polygonize " + kSoup + " --radius 0.25 --cell 3e-4 --force -o p.obj");
   EXPECT_NE(r.err.find("polygonize: cell 0.0003: about"), std::string::npos) << r.err;
   expect_out_of_memory(r, "polygonizing: give a larger --cell or --max-error");
-  for (const std::string output : {"q.png", "r.png", "p.obj"}) {
+  for (const std::string output : {"q.png", "s.png", "r.png", "p.obj"}) {
     EXPECT_FALSE(fs::exists(file(output))) << output;
   }
 }
