@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "app/command_step.hpp"
 #include "app/short_number.hpp"
 #include "mesh/distance.hpp"
 #include "mesh/load.hpp"
@@ -28,11 +29,14 @@ void print_side(const std::string& label, const mesh::OneSidedDistance& side, do
 }  // namespace
 
 int run_distance(const DistanceOptions& options, std::ostream& out, std::ostream& err) {
+  CommandStep step("reading " + options.a_path, kFreeMemory);
   try {
     const mesh::LoadedMesh a = mesh::load_mesh(options.a_path);
+    step.now("reading " + options.b_path, kFreeMemory);
     const mesh::LoadedMesh b = mesh::load_mesh(options.b_path);
     mesh::require_triangles(a, options.a_path, "distance");
     mesh::require_triangles(b, options.b_path, "distance");
+    step.now("measuring the distances", "give fewer --samples, or smaller meshes");
     const mesh::HausdorffDistance distance =
         mesh::hausdorff_distance(a.soup, b.soup, {.samples = options.samples});
     // Fractions of one length shared by every line, so they compare across lines.
@@ -51,6 +55,10 @@ int run_distance(const DistanceOptions& options, std::ostream& out, std::ostream
   } catch (const InputError& error) {
     err << error.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    return step.out_of_memory(err);
+  } catch (const std::length_error&) {
+    return step.out_of_memory(err);
   }
 }
 

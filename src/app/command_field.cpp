@@ -9,9 +9,11 @@
 #include <optional>
 #include <ostream>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 #include <vector>
 
+#include "app/command_step.hpp"
 #include "app/declared_object.hpp"
 #include "app/object_queries.hpp"
 #include "app/soup_triangles.hpp"
@@ -73,6 +75,22 @@ void append_number(std::string& out, double v) {
 
 using FieldFunction = std::function<field::FieldSample(const Vec3&)>;
 
+// "x y z" needs a few dozen characters; a longer line (input without line breaks, binary
+// data) is refused at its line instead of growing a string until memory runs out.
+constexpr size_t kMaxLineLength = 4096;
+
+enum class LineRead { line, end, too_long };
+
+LineRead read_line(std::streambuf& in, std::string& line) {
+  line.clear();
+  for (int c = in.sbumpc(); c != std::char_traits<char>::eof(); c = in.sbumpc()) {
+    if (c == '\n') return LineRead::line;
+    if (line.size() == kMaxLineLength) return LineRead::too_long;
+    line.push_back(char(c));
+  }
+  return line.empty() ? LineRead::end : LineRead::line;
+}
+
 // Answers every "x y z" line of `in`; returns the exit code.
 int answer_points(const FieldFunction& field, std::istream& in, std::ostream& out,
                   std::ostream& err) {
@@ -85,14 +103,20 @@ int answer_points(const FieldFunction& field, std::istream& in, std::ostream& ou
     // after it), evaluate it in parallel, print it in order.
     lines.clear();
     std::string line;
-    while (lines.size() < kLinesPerBlock && (more = bool(std::getline(in, line)))) {
+    LineRead status = LineRead::line;
+    while (lines.size() < kLinesPerBlock &&
+           (status = read_line(*in.rdbuf(), line)) == LineRead::line) {
       lines.push_back(std::move(line));
     }
+    more = status == LineRead::line;
     points.resize(lines.size());
     std::optional<std::string> problem;
     size_t good = 0;
     for (; good < lines.size(); ++good) {
       if ((problem = parse_point(lines[good], points[good]))) break;
+    }
+    if (!problem && status == LineRead::too_long) {
+      problem = "the line is longer than " + std::to_string(kMaxLineLength) + " characters";
     }
     answers.assign(good, {});
     tbb::parallel_for(size_t(0), good, [&](size_t i) {
@@ -115,7 +139,8 @@ int answer_points(const FieldFunction& field, std::istream& in, std::ostream& ou
   return 0;
 }
 
-int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
+int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, std::ostream& err,
+                    CommandStep& step) {
   sdl::ParseOptions parse_options;
   parse_options.library_paths = o.library_paths;
   parse_options.read_folders = o.read_folders;
@@ -124,9 +149,11 @@ int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, 
   const scene::Object& object = declared_implicit(parsed, o.scene_path, o.object_name);
   const implicit::ConvolutionObject& record = std::get<scene::Implicit>(object.shape).object;
   const scene::Transform& placed = object.transform;
+  step.now("building the field of '" + o.object_name + "'", "give an object with fewer components");
   // F_world(p) = F(M^-1 p), so grad F_world = M^-T grad F: the normal rule of
   // the transform.
   const auto answer = [&](const auto& surface) {
+    step.now("evaluating the points", kFreeMemory);
     return answer_points(
         [&](const Vec3& p) {
           field::FieldSample s = surface.field(placed.inverse_point(p));
@@ -147,27 +174,37 @@ int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, 
 
 // A file's field: its triangles through MeshField (grid and SIMD batches); a file with
 // segments or points through the convolution surface of its whole skeleton.
-int run_mesh_field(const FieldOptions& o, std::istream& in, std::ostream& out, std::ostream& err) {
+int run_mesh_field(const FieldOptions& o, std::istream& in, std::ostream& out, std::ostream& err,
+                   CommandStep& step) {
   const mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
+  step.now("building the field of " + o.mesh_path, kFreeMemory);
   if (loaded.segments.empty() && loaded.points.empty()) {
     const implicit::MeshField field(soup_triangles(loaded.soup), o.radius, o.strength);
+    step.now("evaluating the points", kFreeMemory);
     return answer_points([&](const Vec3& p) { return field.field(p); }, in, out, err);
   }
   implicit::ConvolutionObject object;
   implicit::add_skeleton(implicit::skeleton_of(loaded), {o.strength, o.radius}, object);
   const implicit::ConvolutionSurface surface(object);  // its threshold (1) is not used here
+  step.now("evaluating the points", kFreeMemory);
   return answer_points([&](const Vec3& p) { return surface.field(p); }, in, out, err);
 }
 
 }  // namespace
 
 int run_field(const FieldOptions& options, std::istream& in, std::ostream& out, std::ostream& err) {
+  CommandStep step("reading " + (options.scene_path.empty() ? options.mesh_path : options.scene_path),
+                   kFreeMemory);
   try {
-    if (!options.scene_path.empty()) return run_scene_field(options, in, out, err);
-    return run_mesh_field(options, in, out, err);
+    if (!options.scene_path.empty()) return run_scene_field(options, in, out, err, step);
+    return run_mesh_field(options, in, out, err, step);
   } catch (const InputError& e) {
     err << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    return step.out_of_memory(err);
+  } catch (const std::length_error&) {
+    return step.out_of_memory(err);
   }
 }
 

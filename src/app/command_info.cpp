@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/command_step.hpp"
 #include "app/short_number.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/repeated_triangles.hpp"
@@ -116,14 +117,23 @@ void print_self_intersections(const mesh::TriangleSoup& soup, std::ostream& out)
 
 int run_info(const std::string& path, bool self_intersections, std::ostream& out,
              std::ostream& err) {
+  CommandStep step("reading " + path, kFreeMemory);
   try {
     mesh::LoadedMesh mesh = mesh::load_mesh(path);
+    step.now("measuring " + path, kFreeMemory);
     print_report(path, mesh, mesh::compute_stats(mesh.soup), out);
-    if (self_intersections) print_self_intersections(mesh.soup, out);
+    if (self_intersections) {
+      step.now("looking for self-intersections", "leave out --self-intersections");
+      print_self_intersections(mesh.soup, out);
+    }
     return 0;
   } catch (const InputError& error) {
     err << error.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    return step.out_of_memory(err);
+  } catch (const std::length_error&) {
+    return step.out_of_memory(err);
   }
 }
 

@@ -8,9 +8,12 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "app/command_step.hpp"
 #include "app/declared_object.hpp"
 #include "app/object_queries.hpp"
 #include "app/short_number.hpp"
+#include "app/size_check.hpp"
+#include "app/usage_error.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
@@ -22,11 +25,13 @@
 #include "mesh/skeleton_stats.hpp"
 #include "mesh/write.hpp"
 #include "polygonize/outer_shells.hpp"
+#include "polygonize/size_estimate.hpp"
 #include "polygonize/surface_error.hpp"
 #include "render/progress.hpp"
 #include "sdl/parser.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
+#include "util/memory_limit.hpp"
 
 namespace convray::app {
 
@@ -178,9 +183,45 @@ struct Extraction {
   int passes = 1;
 };
 
+std::string number(double value) { return short_number(value, 4); }
+
+// "40 s", "12 min", "15 h": an estimate's time, to two digits.
+std::string duration(double seconds) {
+  if (seconds < 120.0) return short_number(seconds, 2) + " s";
+  if (seconds < 7200.0) return short_number(seconds / 60.0, 2) + " min";
+  return short_number(seconds / 3600.0, 2) + " h";
+}
+
+// Sizes each pass before it runs (issue 17): a large one is announced with its estimate, one
+// that cannot fit in memory refused unless --force.
+// `predicted`: the cell --max-error (or its default) will need, sized after the first pass.
+void size_pass(const polygonize::FieldSource& source, double cell, bool predicted,
+               const PolygonizeOptions& o, std::ostream& err) {
+  polygonize::SizeEstimate e;
+  try {
+    e = polygonize::estimate_size(source, cell);
+  } catch (const std::invalid_argument& error) {  // a lattice too large per axis
+    if (!predicted) throw;
+    throw UsageError("the error bound needs a cell of about " + number(cell) + ": " +
+                     error.what() + "; give a larger --max-error, or a --cell");
+  }
+  if (e.blocks < polygonize::kSampledBlocks) return;
+  std::string details = number(double(e.blocks)) + " lattice blocks";
+  if (e.triangles > 0) details += ", " + number(double(e.triangles)) + " triangles";
+  const std::string job = predicted ? "the error bound, at a predicted cell of " + number(cell) + ","
+                                    : "polygonizing at cell " + number(cell);
+  err << "polygonize: " << (predicted ? "predicted cell " : "cell ") << number(cell) << ": about "
+      << details << ", " << byte_size(e.bytes);
+  if (e.seconds > 0.0) err << ", " << duration(e.seconds);
+  err << "\n";
+  refuse_unless_fits(e.bytes, job, details, "give a larger --cell or --max-error", o.force);
+}
+
 Extraction extract(const PreparedField& prepared, const PolygonizeOptions& o, std::ostream& err) {
   std::unique_ptr<render::Progress> progress;
   polygonize::PolygonizeOptions options;
+  options.before_pass = [&](double cell) { size_pass(prepared.source, cell, false, o, err); };
+  options.on_predicted_cell = [&](double cell) { size_pass(prepared.source, cell, true, o, err); };
   const bool terminal = render::Progress::stderr_is_terminal();
   options.on_start = [&](uint64_t blocks) {
     progress = std::make_unique<render::Progress>("polygonize", blocks, err, terminal);
@@ -204,8 +245,6 @@ Extraction extract(const PreparedField& prepared, const PolygonizeOptions& o, st
   if (progress) progress->finish();
   return result;
 }
-
-std::string number(double value) { return short_number(value, 4); }
 
 void report(const Extraction& e, const mesh::MeshStats& topology, size_t shells_kept,
             const PolygonizeOptions& o, double seconds, std::ostream& out) {
@@ -234,6 +273,7 @@ void report(const Extraction& e, const mesh::MeshStats& topology, size_t shells_
 
 int run_polygonize(const PolygonizeOptions& o, std::ostream& out, std::ostream& err) {
   const auto start = std::chrono::steady_clock::now();
+  CommandStep step("checking the options", kFreeMemory);
   try {
     check_options(o);
     // The output's format is checked before the work, not after it.
@@ -241,7 +281,9 @@ int run_polygonize(const PolygonizeOptions& o, std::ostream& out, std::ostream& 
       throw InputError(kCommandLine, "cannot write .gz meshes: " + o.output);
     }
     check_writable_destination(o.output, "the mesh");
+    step.now("reading " + o.input + " and building its field", kFreeMemory);
     const PreparedField prepared = o.object_name.empty() ? prepare_mesh(o) : prepare_scene(o);
+    step.now("polygonizing", "give a larger --cell or --max-error");
     Extraction e = extract(prepared, o, err);
     size_t shells_kept = 0;
     if (o.outer) shells_kept = polygonize::keep_outer_shells(e.mesh);
@@ -253,6 +295,7 @@ int run_polygonize(const PolygonizeOptions& o, std::ostream& out, std::ostream& 
              "--strength)\n";
       return 2;
     }
+    step.now("writing " + o.output, "give a larger --cell or --max-error");
     mesh::save_mesh(e.mesh.soup, o.output,
                     o.ascii ? mesh::MeshEncoding::Ascii : mesh::MeshEncoding::Default,
                     &e.mesh.normals);
@@ -267,6 +310,10 @@ int run_polygonize(const PolygonizeOptions& o, std::ostream& out, std::ostream& 
   } catch (const std::invalid_argument& e) {
     err << "convray polygonize: " << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    return step.out_of_memory(err);
+  } catch (const std::length_error&) {
+    return step.out_of_memory(err);
   } catch (const std::runtime_error& e) {
     err << "convray polygonize: " << e.what() << "\n";
     return 2;

@@ -24,9 +24,12 @@ struct PolygonizeOptions {
   bool stats = false;                      // print the extraction's figures
   std::string output;                      // .obj .ply .stl (.off)
   bool ascii = false;                      // PLY/STL as text
+  bool force = false;                      // run a pass whose estimate exceeds the memory
 };
 
-// Returns the exit code: 0; 1 when the surface is empty; 2 for bad input (the message, with
+// Before each pass of the lattice, its size is estimated (polygonize/size_estimate.hpp);
+// a large one is printed to `err`, one that cannot fit in memory refused (exit 2) unless
+// `force`. Returns the exit code: 0; 1 when the surface is empty or out of memory; 2 for bad input (the message, with
 // file:line:col where it applies, goes to `err`). Nothing is written unless it succeeds.
 int run_polygonize(const PolygonizeOptions& options, std::ostream& out, std::ostream& err);
 

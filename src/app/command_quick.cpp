@@ -9,7 +9,10 @@
 #include <stdexcept>
 
 #include "scene/quick_scene.hpp"
+#include "app/command_step.hpp"
 #include "app/short_number.hpp"
+#include "app/size_check.hpp"
+#include "app/usage_error.hpp"
 #include "geometry/implicit_shape.hpp"
 #include "geometry/world.hpp"
 #include "implicit/convolution_surface.hpp"
@@ -141,20 +144,23 @@ void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surf
 }
 
 // The whole command once the options are known to be well formed.
-void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
+void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err, CommandStep& step) {
   // Everything that can be checked before the work starts is checked first.
   render::check_image_destination(o.output);
+  refuse_unless_image_fits(o.width, o.height, "give a smaller --size", o.force);
   if (o.radius) quick_threshold(o, *o.radius);
   if (o.camera && o.look_at) make_camera(camera_view(o, Box3{}));
 
   PhaseTimes times;
   Clock::time_point start = Clock::now();
+  step.now("reading " + o.mesh_path, kFreeMemory);
   QuickObject model = load_object(o);
   times.load = seconds_since(start);
   const double radius = model.radius, threshold = model.object.threshold;
 
   // The camera waits for the bounds, which the world knows once built; it is set after.
   start = Clock::now();
+  step.now("building the surface of " + o.mesh_path, kFreeMemory);
   scene::Scene view = scene::quick_scene(std::move(model.object), scene::Camera{}, Vec3(0.0));
   const geometry::World world(view, nullptr,
                               o.reference ? implicit::Tracer::reference : implicit::Tracer::fast);
@@ -171,12 +177,15 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
   // Hit points are polished to rounding level; features are no thinner than about R.
   settings.ray_offset = 1e-5 * radius;
   // A bar only where someone watches: on a terminal, never into a pipe or a log file.
+  step.now("rendering the " + std::to_string(o.width) + "x" + std::to_string(o.height) + " image",
+           "give a smaller --size");
   render::Progress progress("render", uint64_t(o.width) * uint64_t(o.height), err,
                             render::Progress::stderr_is_terminal());
   const render::RenderResult result = render::render_scene(view, world, settings, &progress);
   times.render = seconds_since(start);
 
   start = Clock::now();
+  step.now("writing " + o.output, "give a smaller --size");
   render::write_image_atomically(
       o.output, {o.width, o.height, result.film.rgb(), render::PixelEncoding::linear});
   times.write = seconds_since(start);
@@ -191,15 +200,20 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err) {
 }  // namespace
 
 int run_quick(const QuickOptions& options, std::ostream& out, std::ostream& err) {
+  CommandStep step("checking the options", kFreeMemory);
   try {
-    render_quick(options, out, err);
+    render_quick(options, out, err, step);
     return 0;
   } catch (const InputError& e) {
     err << e.what() << "\n";
     return 2;
+  } catch (const UsageError& e) {
+    err << "convray quick: " << e.what() << "\n";
+    return 2;
   } catch (const std::bad_alloc&) {
-    err << "convray quick: out of memory (try a smaller --size, or a smaller mesh or radius)\n";
-    return 1;
+    return step.out_of_memory(err);
+  } catch (const std::length_error&) {
+    return step.out_of_memory(err);
   } catch (const std::exception& e) {
     err << "convray quick: " << e.what() << "\n";
     return 1;

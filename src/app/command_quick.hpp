@@ -22,6 +22,7 @@ struct QuickOptions {
   std::optional<Vec3> light;  // default: above, left of and behind the camera
   bool reference = false;     // the exact reference tracer instead of the fast path
   bool stats = false;         // print counters and timings after the render
+  bool force = false;         // render an image larger than the memory estimate allows
   std::string output = "quick.png";
 };
 

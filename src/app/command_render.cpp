@@ -13,8 +13,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/command_step.hpp"
 #include "app/frame_names.hpp"
 #include "app/object_queries.hpp"
+#include "app/size_check.hpp"
 #include "app/video.hpp"
 #include "geometry/world.hpp"
 #include "implicit/support_cache.hpp"
@@ -103,24 +105,29 @@ void print_stats(const render::RenderStats& s, const PhaseTimes& t,
 class FrameRenderer {
  public:
   FrameRenderer(const RenderOptions& options, const FramePlan& plan, std::ostream& out,
-                std::ostream& err)
-      : o_(options), plan_(plan), out_(out), err_(err) {}
+                std::ostream& err, CommandStep& step)
+      : o_(options), plan_(plan), out_(out), err_(err), step_(step) {}
 
   // Parses the frame's scene, builds it, renders it and writes `file`.
   void render(const FrameClock& frame, size_t position, const std::string& file) {
     PhaseTimes times;
     Clock::time_point start = Clock::now();
+    const std::string label = plan_.animated ? " (" + progress_label(frame, position) + ")" : "";
+    step_.now("parsing " + o_.scene + label, kFreeMemory);
     const sdl::ParseResult parsed =
         sdl::parse_file(o_.scene, parse_options(o_, frame, meshes_));
     for (const std::string& warning : parsed.warnings) err_ << warning << "\n";
     times.parse = seconds_since(start);
 
     start = Clock::now();
+    step_.now("building the scene" + label, "give a scene with fewer or smaller objects");
     const geometry::World world(parsed.scene, &hierarchies_);
     hierarchies_.next_frame();  // keeps what this frame used, drops the rest
     times.build = seconds_since(start);
 
     start = Clock::now();
+    step_.now("rendering the " + std::to_string(o_.width) + "x" + std::to_string(o_.height) +
+                  " image" + label, "give a smaller +W and +H");
     // A bar only where someone watches: on a terminal, never into a pipe or a log file.
     render::Progress progress(progress_label(frame, position),
                               uint64_t(o_.width) * uint64_t(o_.height), err_,
@@ -130,6 +137,7 @@ class FrameRenderer {
     times.render = seconds_since(start);
 
     start = Clock::now();
+    step_.now("writing " + file, "give a smaller +W and +H");
     render::write_image_atomically(
         file, {o_.width, o_.height, result.film.rgb(), render::PixelEncoding::linear});
     times.write = seconds_since(start);
@@ -164,6 +172,7 @@ class FrameRenderer {
   implicit::SupportCache hierarchies_;
   std::ostream& out_;
   std::ostream& err_;
+  CommandStep& step_;
 };
 
 // Everything that can be checked before the work starts: the destination, the video tool.
@@ -176,6 +185,7 @@ void check_before_rendering(const RenderOptions& o) {
     }
   }
   render::check_image_destination(o.output);
+  refuse_unless_image_fits(o.width, o.height, "give a smaller +W and +H", o.force);
   if (!o.video.empty()) check_video_tools(o.video);
 }
 
@@ -202,7 +212,8 @@ void list_frames(const RenderOptions& o, const FramePlan& plan, std::ostream& ou
   }
 }
 
-void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err,
+                   CommandStep& step) {
   const FramePlan plan = plan_frames(o.animation);
   for (const std::string& warning : plan.warnings) err << "convray: warning: " << warning << "\n";
   if (o.list_frames) return list_frames(o, plan, out);
@@ -214,7 +225,7 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err)
                                                     size_t(o.threads));
   }
   const Clock::time_point start = Clock::now();
-  FrameRenderer renderer(o, plan, out, err);
+  FrameRenderer renderer(o, plan, out, err, step);
   std::vector<std::string> files;
   size_t skipped = 0;
   for (size_t i = 0; i < plan.frames.size(); ++i) {
@@ -234,6 +245,7 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err)
         << seconds_since(start) << " s)\n";
   }
   if (!o.video.empty()) {
+    step.now("assembling " + o.video, kFreeMemory);
     assemble_video(files, o.video, o.video_fps);
     if (!o.quiet) out << "convray: wrote " << o.video << " (" << files.size() << " frames)\n";
   }
@@ -242,8 +254,9 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err)
 }  // namespace
 
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err) {
+  CommandStep step("planning the frames", "give fewer frames (+KFI, +KFF)");
   try {
-    render_frames(options, out, err);
+    render_frames(options, out, err, step);
     return 0;
   } catch (const InputError& e) {
     err << e.what() << "\n";
@@ -256,8 +269,9 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
     err << options.scene << ": " << e.what() << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
-    err << "convray: out of memory (try a smaller image or scene)\n";
-    return 1;
+    return step.out_of_memory(err);
+  } catch (const std::length_error&) {
+    return step.out_of_memory(err);
   } catch (const std::exception& e) {
     err << "convray: " << e.what() << "\n";
     return 1;

@@ -10,6 +10,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include "app/command_step.hpp"
+#include "app/size_check.hpp"
+#include "app/usage_error.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/mesh_field.hpp"
 #include "implicit/threshold.hpp"
@@ -88,8 +91,10 @@ void draw_cross_section(const std::vector<field::Triangle>& triangles, const Pla
 }  // namespace
 
 int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
+  CommandStep step("reading " + o.mesh_path, kFreeMemory);
   try {
     render::check_image_destination(o.output);  // before the work, not after it
+    refuse_unless_image_fits(o.width, o.height, "give a smaller --size", o.force);
     double threshold = 0.0;
     try {
       threshold = implicit::resolve_threshold(o.strength, o.radius, o.offset, o.threshold);
@@ -98,10 +103,13 @@ int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
     }
     const mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
     mesh::require_triangles(loaded, o.mesh_path, "slice");
+    step.now("building the field of " + o.mesh_path, kFreeMemory);
     const implicit::MeshField field(soup_triangles(loaded.soup), o.radius, o.strength);
     const PlaneFrame frame =
         frame_for(loaded.soup.bounds(), o.axis, o.at, 1.5 * o.radius, o.width, o.height);
 
+    step.now("drawing the " + std::to_string(o.width) + "x" + std::to_string(o.height) + " slice",
+             "give a smaller --size");
     std::vector<double> values(size_t(o.width) * o.height);
     tbb::parallel_for(0, o.height, [&](int y) {
       for (int x = 0; x < o.width; ++x) {
@@ -131,6 +139,13 @@ int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
   } catch (const InputError& e) {
     err << e.what() << "\n";
     return 2;
+  } catch (const UsageError& e) {
+    err << "convray slice: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    return step.out_of_memory(err);
+  } catch (const std::length_error&) {
+    return step.out_of_memory(err);
   } catch (const std::exception& e) {
     err << "convray slice: " << e.what() << "\n";
     return 1;

@@ -15,6 +15,7 @@ struct SliceOptions {
   double at = 0.0;
   int width = 800, height = 600;
   std::string output = "slice.png";
+  bool force = false;  // draw an image larger than the memory estimate allows
 };
 
 // `convray slice`: pictures the field on a plane through the mesh: colour by F/T, the

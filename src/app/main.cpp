@@ -17,6 +17,7 @@
 #include "app/command_info.hpp"
 #include "app/command_polygonize.hpp"
 #include "app/command_quick.hpp"
+#include "app/command_step.hpp"
 #include "app/command_render.hpp"
 #include "app/command_slice.hpp"
 #include "app/render_options.hpp"
@@ -166,6 +167,9 @@ CLI::App* add_quick_command(CLI::App& app, QuickArguments& q) {
   quick->add_flag("--stats", q.options.stats,
                   "after the render, print rays, primitives per ray, field evaluations, roots, "
                   "fits, subdivisions, fallbacks, surface memory and the time of each phase");
+  quick->add_flag("--force", q.options.force,
+                  "render even when the image's estimated memory exceeds what this process "
+                  "can have (physical memory, ulimit -v)");
   quick->add_option("-o,--output", q.options.output,
                     "image file: .png 8-bit sRGB, .tif 16-bit sRGB, .exr linear float "
                     "(default quick.png)");
@@ -203,6 +207,9 @@ int render_main(const std::vector<std::string>& args) {
   } catch (const convray::InputError& e) {  // a bad line in an INI file: file:line:col
     std::cerr << e.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {  // the frames are planned here, up to 10^7 of them
+    return convray::app::CommandStep("planning the frames", "give fewer frames (+KFI, +KFF)")
+        .out_of_memory(std::cerr);
   }
   const std::filesystem::path scene(options.scene);
   if (!scene.has_extension() && !std::filesystem::exists(scene)) {
@@ -253,6 +260,8 @@ CLI::App* add_polygonize_command(CLI::App& app, convray::app::PolygonizeOptions&
                 "input otherwise gives an outer and an inner shell)");
   cmd->add_flag("--stats", p.stats, "also print blocks visited and field evaluations");
   cmd->add_flag("--ascii", p.ascii, "PLY and STL as text (default binary)");
+  cmd->add_flag("--force", p.force, "run a lattice pass even when its estimated memory "
+                "exceeds what this process can have (physical memory, ulimit -v)");
   cmd->add_option("-o,--output", p.output, "mesh file to write: .obj .ply .stl (.off)")
       ->required();
   return cmd;
@@ -359,6 +368,9 @@ int main(int argc, char** argv) {
   slice->add_option("--at", slice_options.at, "the plane's coordinate on that axis")->check(kFinite);
   slice->add_option("--size", slice_size, "image size WIDTHxHEIGHT (default 800x600)");
   slice->add_option("-o,--output", slice_options.output, "image file (.png, .exr, .tif, ...)");
+  slice->add_flag("--force", slice_options.force,
+                  "draw even when the image's estimated memory exceeds what this process can "
+                  "have (physical memory, ulimit -v)");
 
   QuickArguments quick_arguments;
   CLI::App* quick = add_quick_command(app, quick_arguments);

@@ -51,6 +51,8 @@ const char* const kRenderUsage =
     "Output:\n"
     "  --stats             print rays, timings and memory after each image\n"
     "  --quiet             no summary line\n"
+    "  --force             render even when the image's estimated memory exceeds what this\n"
+    "                      process can have (physical memory, ulimit -v)\n"
     "  -h, --help          this message\n"
     "\n"
     "POV-Ray's +D/-D (display), +V/-V, +P/-P, +X/-X, +F?, +Q? and +G?/-G? (console output)\n"
@@ -227,6 +229,8 @@ bool apply_long_option(RenderOptions& o, const std::vector<std::string>& args, s
     o.stats = true;
   } else if (name == "--quiet") {
     o.quiet = true;
+  } else if (name == "--force") {
+    o.force = true;
   } else {
     return apply_animation_option(o, args, i, name);
   }

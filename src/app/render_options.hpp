@@ -37,6 +37,7 @@ struct RenderOptions {
   bool list_frames = false;     // --list-frames: print the frames (number, clock, file) only
   bool stats = false;           // --stats
   bool quiet = false;           // --quiet: no summary line
+  bool force = false;           // --force: render an image larger than the memory estimate allows
 };
 
 // Reads the arguments after the program name. POV-Ray's switches are

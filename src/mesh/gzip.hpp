@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace convray::mesh {
 
@@ -19,6 +20,8 @@ uint64_t inflated_size_limit(uint64_t compressed_size);
 // Decompresses gzip data (one member or several back to back; bytes after the last member
 // are ignored, as gzip(1) ignores them). Throws InputError named after `file` for corrupt
 // or truncated data and for output beyond inflated_size_limit().
-std::string gunzip(std::string_view compressed, const std::string& file);
+// The output is counted before it is kept: a bomb is refused before any of it is held, and
+// the result is one allocation of its exact size.
+std::vector<char> gunzip(std::string_view compressed, const std::string& file);
 
 }  // namespace convray::mesh

@@ -72,11 +72,11 @@ LoadedMesh load_mesh(const std::string& path) {
 
 LoadedMesh load_mesh_from_memory(std::string_view bytes, const std::string& name) {
   FileFormat format = format_from_name(name);
-  std::string inflated;
+  std::vector<char> inflated;
   if (format.gzip) {
     if (bytes.empty()) fail(name, "the file is empty");
     inflated = gunzip(bytes, name);
-    bytes = inflated;
+    bytes = std::string_view(inflated.data(), inflated.size());
   }
   if (bytes.empty()) fail(name, format.gzip ? "the decompressed file is empty" : "the file is empty");
 

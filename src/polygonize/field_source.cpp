@@ -1,6 +1,9 @@
 #include "polygonize/field_source.hpp"
 
+#include <optional>
+
 #include "accel/support_shapes.hpp"
+#include "implicit/repeated_triangles.hpp"
 
 namespace convray::polygonize {
 
@@ -15,7 +18,10 @@ Box3 ball_box(const Vec3& center, double radius) {
 std::vector<Box3> support_boxes(const implicit::ConvolutionObject& object) {
   std::vector<Box3> boxes;
   for (const implicit::MeshComponent& mesh : object.meshes) {
-    for (const field::Triangle& triangle : mesh.triangles) {
+    // One box per distinct triangle: copies share their support, and a soup of one triangle
+    // 10^7 times would otherwise hand the lattice 10^7 equal boxes to bin (issue 17).
+    const std::optional<implicit::DistinctTriangles> merged = implicit::merge_repeated(mesh.triangles);
+    for (const field::Triangle& triangle : merged ? merged->triangles : mesh.triangles) {
       boxes.push_back(accel::triangle_support_box(triangle, mesh.weight.radius));
     }
   }

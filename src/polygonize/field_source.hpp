@@ -27,7 +27,8 @@ struct FieldSource {
 };
 
 // The closed axis-aligned box around each primitive's support (the skeleton grown by its
-// radius R) of a convolution object: one per triangle, segment, arc, point and blob component.
+// radius R) of a convolution object: one per distinct triangle of each mesh (exact repeats
+// share one), segment, arc, point and blob component.
 std::vector<Box3> support_boxes(const implicit::ConvolutionObject& object);
 
 // The box around the corners of `box` mapped by the affine `m` (conservative for any affine m).

@@ -128,6 +128,7 @@ SurfaceMesh polygonize(const FieldSource& source, const PolygonizeOptions& optio
   }
   SurfaceMesh result;
   if (bounds.empty()) return result;
+  if (options.before_pass) options.before_pass(options.cell);
   const BlockGrid grid(bounds, options.cell);
   const std::vector<uint64_t> block_keys = grid.touched_blocks(source.supports);
   if (options.on_start) options.on_start(block_keys.size());

@@ -24,6 +24,13 @@ struct PolygonizeOptions {
   // Called from worker threads with the number of blocks just finished; `on_start` first,
   // with the number of blocks in all. Either may be empty.
   std::function<void(uint64_t blocks)> on_start, on_blocks_done;
+  // Called first, on the calling thread, with the cell: where a caller sizes the job
+  // (size_estimate.hpp) and may refuse it by throwing, before any of it is held. May be empty.
+  std::function<void(double cell)> before_pass;
+  // polygonize_to_error only: called after each pass with the cell its bound predicts
+  // (the chord error shrinks as the cell squared), so that a bound only a lattice too large
+  // to hold could meet is refused at once rather than after the passes on the way. May be empty.
+  std::function<void(double cell)> on_predicted_cell;
 };
 
 struct SurfaceMesh {

@@ -51,6 +51,9 @@ ErrorBoundedResult polygonize_to_error(const FieldSource& source, double max_err
     if (result.error <= max_error) return result;
     // Chord error ~ cell^2 * curvature: aim 10% under the bound; refine by at least 10% and
     // at most 4x per pass (the error estimate is rough on coarse meshes).
+    if (options.on_predicted_cell) {
+      options.on_predicted_cell(0.9 * options.cell * std::sqrt(max_error / result.error));
+    }
     const double scale = std::clamp(0.9 * std::sqrt(max_error / result.error), 0.25, 0.9);
     options.cell *= scale;
   }

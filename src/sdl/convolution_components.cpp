@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <exception>
+#include <new>
 #include <stdexcept>
 #include <glm/geometric.hpp>
 
@@ -49,7 +50,11 @@ SharedSkeleton load_mesh_skeleton(Parser& parser, const SourceLoc& loc, const st
   try {
     MeshLibrary* library = parser.options().mesh_library.get();
     return library ? library->load(path) : MeshLibrary::read(path);
-  } catch (const std::exception& error) {  // InputError from the readers, or out of memory
+  } catch (const std::bad_alloc&) {
+    throw;  // the command reports it with its step ("out of memory while parsing SCENE")
+  } catch (const std::length_error&) {
+    throw;
+  } catch (const std::exception& error) {  // InputError from the readers
     parser.fail(loc, "cannot load mesh \"" + name + "\": " + error.what());
   }
 }

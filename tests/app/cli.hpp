@@ -1,9 +1,15 @@
 #pragma once
 // Runs the built convray binary as a user would, through a shell, in a private temporary
 // folder: standard input from a string, standard output and error captured apart.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <chrono>
+#include <thread>
 
 #include <cstdlib>
 #include <filesystem>
@@ -58,6 +64,49 @@ class CliTest : public ::testing::Test {
     run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     run.out = read_file(dir_ / ".stdout");
     run.err = read_file(dir_ / ".stderr");
+    return run;
+  }
+
+  // `convray ARGUMENTS < stdin_text` in the test's folder, with at most `memory_bytes` of
+  // address space (RLIMIT_AS, set in the child before exec, as `ulimit -v`) and `seconds` of
+  // wall time (then SIGTERM, which removes temporaries, and SIGKILL a second later;
+  // timed_out says so). MALLOC_ARENA_MAX=2 keeps glibc from reserving 64 MiB of address space
+  // per thread, so the limit means the same on a machine with many cores.
+  CliRun run_convray_limited(const std::string& arguments, uint64_t memory_bytes, int seconds,
+                             const std::string& stdin_text = "", bool* timed_out = nullptr) const {
+    std::ofstream(dir_ / ".stdin") << stdin_text;
+    const std::string command = "cd '" + dir_.string() + "' && exec '" +
+                                std::string(CONVRAY_BINARY) + "' " + arguments;
+    const std::string in = (dir_ / ".stdin").string(), out = (dir_ / ".stdout").string(),
+                      err = (dir_ / ".stderr").string();
+    const pid_t child = ::fork();
+    if (child == 0) {
+      const rlimit limit{rlim_t(memory_bytes), rlim_t(memory_bytes)};
+      ::setrlimit(RLIMIT_AS, &limit);
+      ::setenv("MALLOC_ARENA_MAX", "2", 1);
+      ::dup2(::open(in.c_str(), O_RDONLY), 0);
+      ::dup2(::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600), 1);
+      ::dup2(::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600), 2);
+      ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    bool killed = false;
+    while (::waitpid(child, &status, WNOHANG) == 0) {
+      if (!killed && std::chrono::steady_clock::now() > deadline) {
+        ::kill(child, SIGTERM);
+        std::this_thread::sleep_for(std::chrono::seconds(1));
+        ::kill(child, SIGKILL);
+        killed = true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    if (timed_out) *timed_out = killed;
+    CliRun run;
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = read_file(out);
+    run.err = read_file(err);
     return run;
   }
 

@@ -127,12 +127,18 @@ TEST_F(SceneReads, SceneTextReachesTheTerminalEscaped) {
 }
 
 TEST_F(SceneReads, AHugeTokenIsCutInTheMessage) {
-  const std::string huge(10'000'000, 'x');
+  // A token as long as a line may be (4096 characters): echoed cut, with its length.
+  const std::string huge(4000, 'x');
   const testing::CliRun run =
       run_convray("field --mesh '" + kSoup + "' --radius 0.25", "0 0 " + huge + "\n");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_LT(run.err.size(), 2000u) << run.err.substr(0, 400);
   EXPECT_NE(run.err.find("bytes)"), std::string::npos) << run.err.substr(0, 400);
+  // Longer, the line itself is refused before any of it is echoed (issue 17).
+  const testing::CliRun longer = run_convray("field --mesh '" + kSoup + "' --radius 0.25",
+                                             "0 0 " + std::string(10'000'000, 'x') + "\n");
+  EXPECT_EQ(longer.exit_code, 2);
+  EXPECT_EQ(longer.err, "stdin:1: the line is longer than 4096 characters\n");
 }
 
 }  // namespace
