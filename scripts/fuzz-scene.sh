@@ -10,19 +10,14 @@
 # under fuzz-out/scene (git-ignored) so later runs continue where earlier ones stopped.
 # Exits non-zero if the run found a crash, leak, timeout or out-of-memory.
 set -euo pipefail
+source "$(dirname "$0")/fuzz-lib.sh"
+fuzz_help_or_seconds "$0" "$@"
 
 seconds=${1:-600}
-root=$(cd "$(dirname "$0")/.." && pwd)
-build=$root/build-fuzz
+root=$fuzz_root
 out=$root/fuzz-out/scene
-jobs=${JOBS:-2}
-
-mkdir -p "$out/logs" "$out/corpus" "$out/artifacts"
-CC=${CC:-clang} CXX=${CXX:-clang++} cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCONVRAY_BUILD_FUZZ=ON -DCONVRAY_BUILD_TESTS=OFF -DCONVRAY_BUILD_BENCH=OFF >"$out/logs/configure.log" 2>&1 ||
-  { cat "$out/logs/configure.log"; exit 2; }
-cmake --build "$build" -j "$jobs" --target scene_fuzz >"$out/logs/build.log" 2>&1 ||
-  { tail -50 "$out/logs/build.log"; exit 2; }
+fuzz_build "$out/logs" scene_fuzz
+mkdir -p "$out/corpus"
 
 # Seeds: real scenes, small enough to mutate quickly.
 for f in /usr/share/povray-3.7/scenes/objects/*.pov /usr/share/povray-3.7/scenes/language/*/*.pov \
@@ -32,14 +27,7 @@ for f in /usr/share/povray-3.7/scenes/objects/*.pov /usr/share/povray-3.7/scenes
   cp -n "$f" "$out/corpus/seed_$(basename "$(dirname "$f")")_$(basename "$f")" 2>/dev/null || true
 done
 
-before=$(find "$out/artifacts" -type f | wc -l)
-status=0
-"$build/fuzz/scene_fuzz" "$out/corpus" -dict="$root/fuzz/scene.dict" -max_total_time="$seconds" \
-  -max_len=16384 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-  -artifact_prefix="$out/artifacts/" >"$out/logs/run.log" 2>&1 || status=$?
-executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/logs/run.log" | tail -1)
-found=$(($(find "$out/artifacts" -type f | wc -l) - before))
-if [ "$status" -ne 0 ] && [ "$found" -eq 0 ]; then found=1; fi
-echo "scene parser: $seconds s, ${executions:-?} executions, $found problems" \
-  "$([ "$found" -gt 0 ] && echo "(artifacts: $out/artifacts, log: $out/logs/run.log)")"
-[ "$found" -eq 0 ]
+fuzz_run scene_fuzz "$out/corpus" "$out/artifacts" "$out/logs/run.log" "$seconds" \
+  -dict="$root/fuzz/scene.dict" -max_len=16384
+fuzz_summary "scene parser" "$seconds" "$out/artifacts" "$out/logs/run.log"
+[ "$fuzz_found" -eq 0 ]
