@@ -32,10 +32,20 @@ double signed_noise(const Vec3& p);
 Vec3 vector_noise(const Vec3& p);
 
 // The turbulence warp's displacement: sum over `octaves` of omega^k vector_noise(lambda^k p),
-// omega rounded to single precision as POV-Ray stores it.
+// omega and lambda rounded to single precision as POV-Ray stores them.
 Vec3 turbulence_vector(const Vec3& p, int octaves, double omega, double lambda);
 
-// Scalar turbulence: sum over `octaves` of omega^k * |signed_noise(lambda^k p)|.
-double turbulence_scalar(const Vec3& p, int octaves, double omega, double lambda);
+// The noise inside POV-Ray's scalar turbulence, granite and wrinkles, before its clamp to
+// [0, 1]: 2 noise - 1/2 for generator 2 (measured: 0.97971164 r + 0.53106812), r + 1/2 for
+// generator 1.
+double unclamped_turbulence_noise(const Vec3& p, int generator);
+
+// The same clamped to [0, 1]: one octave of granite and wrinkles.
+double turbulence_noise(const Vec3& p, int generator);
+
+// The scalar turbulence of marble and agate: the first octave clamped, the others not (as
+// the binary draws them), turbulence_noise(p) + sum over octaves k = 1.. of
+// omega^k unclamped_turbulence_noise(lambda^k p); omega and lambda in single precision.
+double turbulence_scalar(const Vec3& p, int octaves, double omega, double lambda, int generator);
 
 }  // namespace convray::render
