@@ -8,6 +8,9 @@
 //             turbulence of 6 octaves, omega 1/2, lambda 2
 //   marble    x + turbulence.x T(p) with the pattern's octaves, omega and lambda: marble's
 //             turbulence is this scalar sum, not the warp other patterns get
+//   wood      |(x + sin(2 pi a.x (x + D.x)), y + sin(2 pi a.y (y + D.y)))|, a the turbulence
+//             amount and D the warp's displacement (render/noise.hpp); |(x, y)| without
+//   marble and wood then wrap as fmod(v, 1.00001) (+1 below zero), as the binary does
 // (noise, turbulence_noise and T as in render/noise.hpp, for the pattern's noise_generator).
 #include "scene/texture.hpp"
 #include "util/math.hpp"
@@ -21,7 +24,10 @@ double noise_pattern_value(const scene::PatternSpace& space, const Vec3& q);
 // Marble's value before its wave: x, plus its own scalar turbulence when it has one.
 double marble_value(const scene::PatternSpace& space, const Vec3& q);
 
-// Whether the pattern takes its `turbulence` as its own (marble) rather than as a warp.
+// Wood's value before its wave: the distance from the z axis, turbulence its own way.
+double wood_value(const scene::PatternSpace& space, const Vec3& q);
+
+// Whether the pattern takes its `turbulence` its own way (marble, wood) rather than as a warp.
 bool has_own_turbulence(scene::Pattern pattern);
 
 }  // namespace convray::render

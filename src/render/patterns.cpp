@@ -120,7 +120,7 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
     case Pattern::marble:
       return marble_value(space, q);
     case Pattern::wood:
-      return std::sqrt(q.x * q.x + q.y * q.y);
+      return wood_value(space, q);
     case Pattern::granite:
     case Pattern::agate:
     case Pattern::bozo:

@@ -89,8 +89,10 @@ TEST(Patterns, OnionIsTheFractionalDistanceFromTheOrigin) {
 TEST(Patterns, MarbleAndWoodAreTriangleWaves) {
   const scene::PatternSpace marble = space_of(Pattern::marble);
   EXPECT_NEAR(pattern_value(marble, Vec3(0.05, 0, 0)), 0.1, 1e-12);
-  EXPECT_NEAR(pattern_value(marble, Vec3(-1.45, 0, 0)), 0.9, 1e-12);
-  EXPECT_NEAR(pattern_value(marble, Vec3(1.55, 7, 3)), 0.9, 1e-12);
+  // 0.9 but for POV-Ray's wrap, which drifts by 1e-5 per unit of x (its values: 0.89998 and
+  // 0.90002).
+  EXPECT_NEAR(pattern_value(marble, Vec3(-1.45, 0, 0)), 0.89998, 1e-12);
+  EXPECT_NEAR(pattern_value(marble, Vec3(1.55, 7, 3)), 0.90002, 1e-12);
   const scene::PatternSpace wood = space_of(Pattern::wood);
   EXPECT_NEAR(pattern_value(wood, Vec3(-1.95, 1.45, 0)), 0.86000, 5e-5);  // POV-Ray 3.7
   EXPECT_NEAR(pattern_value(wood, Vec3(0.05, -0.05, 9)), 0.14142, 5e-5);

@@ -108,6 +108,24 @@ TEST(PovRayNoisePatterns, MarbleTurbulenceMatches) {
                         marble, points, 1e-12);
 }
 
+// Wood's turbulence moves x and y by sines of the warp (render/noise_patterns.hpp); marble and
+// wood wrap with POV-Ray's drift of 1e-5 per unit, checked here out to |x| = 40.
+TEST(PovRayNoisePatterns, WoodTurbulenceAndTheDriftingWrapMatch) {
+  SKIP_WITHOUT_POVRAY();
+  const std::vector<Vec3> points = random_points(36, 150, -40.0, 40.0);
+  scene::PatternSpace wood = space_of(Pattern::wood);
+  wood.wave = scene::Wave::ramp;
+  wood.turbulence.amount = Vec3(0.05, 0.08, 0.3);
+  wood.turbulence.octaves = 3;
+  wood.turbulence.omega = 0.7;
+  wood.turbulence.lambda = 2.3;
+  expect_matches_povray("wood ramp_wave turbulence <0.05, 0.08, 0.3> octaves 3 omega 0.7 "
+                        "lambda 2.3",
+                        wood, points, 1e-11);
+  expect_matches_povray("marble", space_of(Pattern::marble), points, 1e-11);
+  expect_matches_povray("wood", space_of(Pattern::wood), points, 1e-11);
+}
+
 // Bozo with turbulence: the warp of render/noise.hpp, then the noise.
 TEST(PovRayNoisePatterns, WarpedBozoMatches) {
   SKIP_WITHOUT_POVRAY();
