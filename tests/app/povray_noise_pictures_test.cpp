@@ -1,5 +1,5 @@
 // The noise-based patterns, the turbulence warp, wood's and marble's own turbulence and the
-// bumps normal (render/noise.hpp, render/noise_patterns.hpp), in whole pictures against the
+// bumps, dents and wrinkles normals (render/noise.hpp, render/noise_patterns.hpp), in whole pictures against the
 // povray binary's.
 #include <gtest/gtest.h>
 
@@ -49,13 +49,15 @@ TEST_F(PovRayNoisePictures, MarbleAndWoodTurbulenceMatch) {
   EXPECT_GE(compare("marble_wood", patterned_boxes(pigments)), 50.0) << convray_err;
 }
 
-TEST_F(PovRayNoisePictures, BumpsNormalMatches) {
+TEST_F(PovRayNoisePictures, BumpsDentsAndWrinklesNormalsMatch) {
   SKIP_WITHOUT_POVRAY();
   const std::string scene =
       kStage +
       "plane { -z, 0 pigment { rgb 0.8 } normal { bumps 0.7 scale 0.4 } finish { phong 0.5 } }\n"
-      "sphere { <1.5, 0, -1.5>, 1 pigment { rgb <1, 0.6, 0.4> } normal { bumps 1 scale 0.2 } }\n";
-  EXPECT_GE(compare("bumps_normal", scene), 40.0) << convray_err;
+      "sphere { <1.5, 0, -1.5>, 1 pigment { rgb <1, 0.6, 0.4> } normal { bumps 1 scale 0.2 } }\n"
+      "sphere { <-1.5, 0.8, -1.5>, 0.8 pigment { rgb 0.9 } normal { dents 2 scale 0.3 } }\n"
+      "sphere { <-1.5, -1.2, -1.5>, 0.8 pigment { rgb 0.9 } normal { wrinkles 0.8 scale 0.5 } }\n";
+  EXPECT_GE(compare("noise_normals", scene), 40.0) << convray_err;
 }
 
 }  // namespace
