@@ -13,6 +13,7 @@
 #include "geometry/disc.hpp"
 #include "geometry/height_field.hpp"
 #include "geometry/polygon.hpp"
+#include "geometry/sor.hpp"
 #include "geometry/implicit_shape.hpp"
 #include "geometry/lathe.hpp"
 #include "geometry/modifiers.hpp"
@@ -81,6 +82,9 @@ class ShapeBuilder {
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
   ShapePtr make(const scene::HeightField& h, const Inherited& own) const {
     return std::make_unique<HeightFieldShape>(h, surface_for(own));
+  }
+  ShapePtr make(const scene::Sor& s, const Inherited& own) const {
+    return std::make_unique<SorShape>(s.points, s.open, surface_for(own));
   }
   ShapePtr make(const scene::Polygon& p, const Inherited& own) const {
     return std::make_unique<PolygonShape>(p.outlines, p.normal, surface_for(own));

@@ -59,6 +59,11 @@ struct Polygon {
   std::vector<std::vector<Vec3>> outlines;
   Vec3 normal{0.0, 0.0, 1.0};  // the plane's, not necessarily unit
 };
+// POV-Ray's `sor` (geometry/sor.hpp): points <r, h>, the first and last setting slopes only.
+struct Sor {
+  std::vector<Vec2> points;
+  bool open = false;
+};
 // POV-Ray's `height_field` (geometry/height_field.hpp): heights in [0, 1] on a grid of
 // columns x rows vertices over the unit square of the x-z plane, row 0 at z = 0.
 struct HeightField {
@@ -166,7 +171,7 @@ struct Csg {
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
                            Implicit, Csg, Polynomial, Text, Prism, Superellipsoid,
-                           Lathe, Polygon, HeightField>;
+                           Lathe, Polygon, HeightField, Sor>;
 
 // A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
 // empty stand-in, so that include files declaring such objects still work; placing it in the

@@ -40,6 +40,7 @@ constexpr ShapeKeyword kShapes[] = {
     {"superellipsoid", parse_superellipsoid},
     {"lathe", parse_lathe},
     {"polygon", parse_polygon},
+    {"sor", parse_sor},
     {"height_field", parse_height_field},
     {"poly", parse_polynomial},
     {"cubic", parse_polynomial},
@@ -108,7 +109,6 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 }
 
 constexpr std::string_view kUnsupportedObjects[] = {
-    "sor",
     "polynomial", "isosurface",    "parametric",    "julia_fractal", "bicubic_patch",
     "sphere_sweep",  "ovus",          "lemon"};
 

@@ -1,4 +1,4 @@
-// height_field and polygon against the povray binary's pictures: POV-Ray's plasma2.png and
+// height_field, polygon and sor against the povray binary's pictures: POV-Ray's plasma2.png and
 // fract003.png (palette images in its include folder, which both programs search) as
 // height fields, flat and smooth, with a water level and cut by CSG; polygons with holes.
 #include <gtest/gtest.h>
@@ -54,6 +54,19 @@ TEST_F(PovRayHeightField, PolygonsAsPovRay) {
       "  pigment { rgb <0.3, 1, 0.2> } translate <0.5, 0, -1> }\n"
       "plane { y, -0.01 pigment { rgb 0.7 } }\n";
   EXPECT_GE(compare("polygons", scene), 40.0) << convray_err;
+}
+
+TEST_F(PovRayHeightField, SorsAsPovRay) {
+  SKIP_WITHOUT_POVRAY();
+  const std::string scene =
+      kSetting +
+      "sor { 6, <0.5, -0.5>, <1, 0>, <0.6, 0.7>, <1.2, 1.1>, <0.4, 2>, <0.9, 2.6>\n"
+      "  translate <-1.6, 0, 0> pigment { rgb <1, 0.6, 0.3> } }\n"
+      "sor { 7, <0, 0>, <0.118143, 0>, <0.620253, 0.540084>, <0.210970, 0.827004>,\n"
+      "  <0.194093, 0.962025>, <0.286920, 1>, <0.468354, 1.033755> open scale 2\n"
+      "  translate <1.4, 0, 0> pigment { rgb <0.3, 0.6, 1> } }\n"
+      "plane { y, -0.01 pigment { rgb 0.7 } }\n";
+  EXPECT_GE(compare("sors", scene), 40.0) << convray_err;
 }
 
 }  // namespace
