@@ -1,7 +1,7 @@
 #include "app/image_reader.hpp"
 
-#include "render/image_plugin.hpp"
-#include "render/png_palette.hpp"
+#include "core/image_plugin.hpp"
+#include "core/png_palette.hpp"
 
 namespace convray::app {
 
@@ -10,7 +10,7 @@ namespace {
 class PluginImageReader : public sdl::ImageReader {
  public:
   sdl::ImageFile read(const std::string& path) const override {
-    render::image_plugin::ReadImage image = render::image_plugin::read(path);
+    image_plugin::ReadImage image = image_plugin::read(path);
     sdl::ImageFile file;
     file.width = image.width;
     file.height = image.height;
@@ -18,7 +18,7 @@ class PluginImageReader : public sdl::ImageReader {
     file.bits = image.bits;
     file.grey = image.grey;
     file.rgba = std::move(image.rgba);
-    file.palette_indices = render::png_palette_indices(path, image.width, image.height);
+    file.palette_indices = png_palette_indices(path, image.width, image.height);
     return file;
   }
 };

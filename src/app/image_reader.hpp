@@ -1,6 +1,6 @@
 #pragma once
 // The pictures of image_maps (sdl/image_reader.hpp), read through the image plugin
-// (render/image_plugin.hpp): convray itself does not link OpenImageIO.
+// (core/image_plugin.hpp): convray itself does not link OpenImageIO.
 #include <memory>
 
 #include "sdl/image_reader.hpp"

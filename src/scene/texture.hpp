@@ -74,6 +74,8 @@ struct PatternSpace {
   int iterations = 0;                 // mandel only: the most iterations
   Vec3 brick_size{8.0, 3.0, 4.5};     // brick only: one brick with its mortar
   double mortar = 0.5;                // brick only: the mortar's width
+  double agate_turb = 1.0;            // agate only: the weight of its turbulence
+  int noise_generator = 2;            // POV-Ray's noise generator: 1 original, 2 range-corrected
   Turbulence turbulence;
   double frequency = 1.0;  // value -> fract(value * frequency + phase)
   double phase = 0.0;

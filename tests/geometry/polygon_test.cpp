@@ -4,7 +4,7 @@
 // and the square's own coordinates.
 #include <random>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry::testing {

@@ -1,0 +1,103 @@
+#include "core/png_writer.hpp"
+
+#include <png.h>
+
+#include <cmath>
+#include <csetjmp>
+#include <cstdio>
+#include <new>
+
+#include "util/error.hpp"
+
+namespace convray {
+
+uint8_t quantize_8bit(float value) {
+  const float scaled = value * 255.0f;  // in float, as OpenImageIO computes it
+  if (!(scaled > 0.0f)) return 0;       // also NaN
+  if (scaled >= 255.0f) return 255;
+  return uint8_t(std::round(scaled));  // halves away from zero
+}
+
+namespace {
+
+// What libpng's callbacks reach: where the bytes go and the error they ended with. libpng is
+// C: an exception must not unwind through it, so errors are recorded here and leave through
+// png_longjmp to the setjmp in run_libpng.
+struct Sink {
+  std::vector<unsigned char>* bytes = nullptr;
+  char message[200] = "";
+};
+
+void on_error(png_structp png, png_const_charp message) {
+  auto* sink = static_cast<Sink*>(png_get_error_ptr(png));
+  std::snprintf(sink->message, sizeof sink->message, "%s", message ? message : "");
+  png_longjmp(png, 1);
+}
+
+// libpng's default prints warnings on the terminal; none of them concerns a file we write.
+void on_warning(png_structp, png_const_charp) {}
+
+void on_write(png_structp png, png_bytep data, size_t length) {
+  auto* sink = static_cast<Sink*>(png_get_io_ptr(png));
+  bool out_of_memory = false;
+  try {
+    sink->bytes->insert(sink->bytes->end(), data, data + length);
+  } catch (const std::bad_alloc&) {
+    out_of_memory = true;  // png_error after the handler: no longjmp out of a catch block
+  }
+  if (out_of_memory) png_error(png, "out of memory");
+}
+
+void on_flush(png_structp) {}
+
+// The encoding proper. Only C objects live in this frame, so the longjmp of on_error skips
+// no destructor; returns false when libpng reported an error.
+bool run_libpng(png_structp png, png_infop info, Sink* sink, const ImagePixels& pixels,
+                const unsigned char* levels) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_write_fn(png, sink, on_write, on_flush);
+  png_set_IHDR(png, info, png_uint_32(pixels.width), png_uint_32(pixels.height), 8,
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  if (pixels.encoding == PixelEncoding::linear) {
+    // The chunks OpenImageIO wrote for an sRGB picture: sRGB (absolute colorimetric intent)
+    // and the gAMA and cHRM values that the PNG specification pairs with it.
+    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
+  }
+  png_write_info(png, info);
+  const size_t row_bytes = 3 * size_t(pixels.width);
+  for (int y = 0; y < pixels.height; ++y) png_write_row(png, levels + size_t(y) * row_bytes);
+  png_write_end(png, info);
+  return true;
+}
+
+// The 8-bit levels the file stores, row after row.
+std::vector<unsigned char> levels_of(const ImagePixels& pixels) {
+  std::vector<unsigned char> levels(pixels.rgb.size());
+  const bool linear = pixels.encoding == PixelEncoding::linear;
+  for (size_t k = 0; k < levels.size(); ++k) {
+    const float v = pixels.rgb[k];
+    levels[k] = quantize_8bit(linear ? encode_srgb(v) : v);
+  }
+  return levels;
+}
+
+}  // namespace
+
+std::vector<unsigned char> encode_png(const std::string& path, const ImagePixels& pixels) {
+  const std::vector<unsigned char> levels = levels_of(pixels);
+  std::vector<unsigned char> bytes;
+  Sink sink;
+  sink.bytes = &bytes;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, on_error, on_warning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  const bool written = info && run_libpng(png, info, &sink, pixels, levels.data());
+  png_destroy_write_struct(png ? &png : nullptr, info ? &info : nullptr);
+  if (!written) {
+    const std::string reason = sink.message[0] ? sink.message : "libpng could not start";
+    throw InputError({path}, "cannot write the image: " + reason);
+  }
+  return bytes;
+}
+
+}  // namespace convray

@@ -1,0 +1,25 @@
+#include "scene/mesh_skeleton.hpp"
+
+namespace convray::scene {
+
+MeshSkeleton skeleton_of(const mesh::LoadedMesh& mesh) {
+  const std::vector<Vec3>& v = mesh.soup.vertices;
+  MeshSkeleton skeleton;
+  skeleton.triangles.reserve(mesh.soup.size());
+  for (const mesh::Triangle& t : mesh.soup.triangles) skeleton.triangles.push_back({v[t[0]], v[t[1]], v[t[2]]});
+  skeleton.segments.reserve(mesh.segments.size());
+  for (const mesh::Segment& s : mesh.segments) skeleton.segments.push_back({v[s[0]], v[s[1]]});
+  skeleton.points.reserve(mesh.points.size());
+  for (uint32_t p : mesh.points) skeleton.points.push_back(v[p]);
+  return skeleton;
+}
+
+void add_skeleton(MeshSkeleton skeleton, const Weight& weight, ConvolutionObject& object) {
+  if (!skeleton.triangles.empty()) object.meshes.push_back({std::move(skeleton.triangles), weight});
+  object.segments.reserve(object.segments.size() + skeleton.segments.size());
+  for (const field::Segment& s : skeleton.segments) object.segments.push_back({s, weight});
+  object.points.reserve(object.points.size() + skeleton.points.size());
+  for (const Vec3& p : skeleton.points) object.points.push_back({p, weight});
+}
+
+}  // namespace convray::scene
