@@ -12,6 +12,7 @@
 #include "geometry/csg.hpp"
 #include "geometry/disc.hpp"
 #include "geometry/implicit_shape.hpp"
+#include "geometry/isosurface.hpp"
 #include "geometry/lathe.hpp"
 #include "geometry/modifiers.hpp"
 #include "geometry/plane.hpp"
@@ -75,6 +76,9 @@ class ShapeBuilder {
   }
   ShapePtr make(const scene::Lathe& l, const Inherited& own) const {
     return std::make_unique<LatheShape>(l.pieces, surface_for(own));
+  }
+  ShapePtr make(const scene::Isosurface& i, const Inherited& own) const {
+    return std::make_unique<IsosurfaceShape>(i, surface_for(own));
   }
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
   ShapePtr make(const scene::TriangleMesh& m, const Inherited& own) const;

@@ -166,6 +166,8 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
       return spiral1(q, space.arms);
     case Pattern::mandel:
       return mandel(q, space.iterations);
+    case Pattern::function:
+      return (*space.function)(q.x, q.y, q.z);
   }
   return 0.0;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scene/color.hpp"
+#include "scene/function.hpp"
 #include "scene/transform.hpp"
 
 namespace convray::scene {
@@ -39,6 +40,7 @@ enum class Pattern {
   spiral1,      // `arms` spirals winding about z like a screw
   mandel,       // the Mandelbrot set in the x-y plane: escape time / `iterations`
   average,      // pigments only: the pigment_map's pigments mixed by their weights
+  function,     // a user function of x, y, z (PatternSpace::function), wrapped like gradient
 };
 
 // A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
@@ -68,6 +70,7 @@ struct PatternSpace {
   Vec3 gradient_axis{1.0, 0.0, 0.0};  // gradient only
   double arms = 1.0;                  // spiral1 only: its number of arms
   int iterations = 0;                 // mandel only: the most iterations
+  std::shared_ptr<const Function> function;  // function only
   Turbulence turbulence;
   double frequency = 1.0;  // value -> fract(value * frequency + phase)
   double phase = 0.0;

@@ -39,6 +39,7 @@ constexpr ShapeKeyword kShapes[] = {
     {"prism", parse_prism},
     {"superellipsoid", parse_superellipsoid},
     {"lathe", parse_lathe},
+    {"isosurface", parse_isosurface},
     {"poly", parse_polynomial},
     {"cubic", parse_polynomial},
     {"quartic", parse_polynomial},
@@ -51,7 +52,7 @@ constexpr std::string_view kObjectWords[] = {
     "disc",         "triangle",   "smooth_triangle", "mesh",     "mesh2",       "union",
     "intersection", "difference", "merge",           "blob",     "convolution", "object",
     "poly",         "cubic",      "quartic",         "quadric",  "text", "prism",
-    "superellipsoid", "lathe"};
+    "superellipsoid", "lathe", "isosurface"};
 
 // The declared object named by the next token (consumed), or null when it names none.
 scene::ObjectPtr declared_object(Parser& parser) {
@@ -107,7 +108,7 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 
 constexpr std::string_view kUnsupportedObjects[] = {
     "sor",
-    "polynomial", "isosurface",    "parametric",    "julia_fractal", "bicubic_patch",
+    "polynomial", "parametric",    "julia_fractal", "bicubic_patch",
     "height_field", "polygon",     "sphere_sweep",  "ovus",          "lemon"};
 
 }  // namespace
