@@ -26,9 +26,31 @@ std::uint32_t Function::add_callee(FunctionPtr callee) {
   return std::uint32_t(callees_.size() - 1);
 }
 
+std::uint32_t Function::add_color_source(std::shared_ptr<const ColorSource> source) {
+  color_sources_.push_back(std::move(source));
+  return std::uint32_t(color_sources_.size() - 1);
+}
+
+double component_of(const Color& color, ColorComponent component) {
+  switch (component) {
+    case ColorComponent::red: return color.rgb.r;
+    case ColorComponent::green: return color.rgb.g;
+    case ColorComponent::blue: return color.rgb.b;
+    case ColorComponent::filter: return color.filter;
+    case ColorComponent::transmit: return color.transmit;
+    case ColorComponent::gray:
+      // POV-Ray's grey of a colour (reference manual, colour operators).
+      return 0.297 * color.rgb.r + 0.589 * color.rgb.g + 0.114 * color.rgb.b;
+  }
+  return 0.0;
+}
+
 bool Function::constant_value(std::uint32_t node, double& out) const {
   const FunctionNode& n = nodes_[node];
-  if (n.op == FunctionOp::parameter) return false;
+  if (n.op == FunctionOp::parameter || n.op == FunctionOp::color) {
+    // A colour source's colour at a constant point could be folded too; it is rare.
+    return false;
+  }
   if (n.op == FunctionOp::constant) {
     out = n.value;
     return true;
@@ -98,6 +120,8 @@ double Function::at(std::uint32_t index, const double* arguments) const {
       if (n.count == 3) return s < 0.0 ? a(1) : a(2);
       return s < 0.0 ? a(1) : s == 0.0 ? a(2) : a(3);
     }
+    case FunctionOp::color:
+      return component_of(color_sources_[n.index]->at(Vec3(a(0), a(1), a(2))), n.component);
     case FunctionOp::call:
     case FunctionOp::internal: {
       std::array<double, kMaxParameters> values{};

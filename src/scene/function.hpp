@@ -15,7 +15,22 @@
 #include <string>
 #include <vector>
 
+#include "scene/color.hpp"
+
 namespace convray::scene {
+
+// A colour at every point that a function reads (`function { pigment { P } }`, and
+// `function { pattern { P } }` as a grey): render/ implements it (render/function_sources.hpp)
+// and the parser hands it to the compiler, so that this module needs nothing of render/.
+class ColorSource {
+ public:
+  virtual ~ColorSource() = default;
+  virtual Color at(const Vec3& point) const = 0;
+};
+
+// Which number of a colour `.red`, `.x`, `.gray` ... picks.
+enum class ColorComponent : std::uint8_t { red, green, blue, filter, transmit, gray };
+double component_of(const Color& color, ColorComponent component);
 
 // POV-Ray's internal functions that convray has: `function { internal(N) }` in functions.inc.
 enum class InternalFunction : std::uint8_t {
@@ -45,6 +60,7 @@ enum class FunctionOp : std::uint8_t {
   select,       // select(a, b, c[, d]): b where a < 0, c where a = 0 (or a >= 0 for 3), d
   call,         // `callee`, the operands as its arguments
   internal,     // `internal_function`, the operands as its arguments
+  color,        // `component` of colour source `index` at the operands (x, y, z)
 };
 
 struct FunctionNode {
@@ -53,6 +69,7 @@ struct FunctionNode {
   double value = 0.0;                  // constant
   std::uint32_t index = 0;             // parameter number; callee number
   InternalFunction internal_function = InternalFunction::r;
+  ColorComponent component = ColorComponent::red;
   double (*math1)(double) = nullptr;
   double (*math2)(double, double) = nullptr;
 };
@@ -80,6 +97,7 @@ class Function {
   std::uint32_t add(FunctionNode node, std::span<const std::uint32_t> operands = {});
   std::uint32_t add_constant(double value);
   std::uint32_t add_callee(FunctionPtr callee);
+  std::uint32_t add_color_source(std::shared_ptr<const ColorSource> source);
   void set_root(std::uint32_t node) { root_ = node; }
   // The node's value if it needs no parameter (constant folding), else false.
   bool constant_value(std::uint32_t node, double& out) const;
@@ -95,6 +113,7 @@ class Function {
   std::vector<FunctionNode> nodes_;
   std::vector<std::uint32_t> operands_;
   std::vector<FunctionPtr> callees_;
+  std::vector<std::shared_ptr<const ColorSource>> color_sources_;
   std::uint32_t root_ = 0;
 };
 

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <string>
 
+#include "render/function_sources.hpp"
 #include "sdl/diagnostics.hpp"
+#include "sdl/item_parsers.hpp"
 #include "sdl/parser_impl.hpp"
 
 namespace convray::sdl {
@@ -210,19 +212,47 @@ class FunctionCompiler {
                           callee.unsupported->feature);
     }
     const std::vector<std::uint32_t> arguments = argument_list("function '" + callee.name + "'");
-    const std::size_t wanted = callee.compiled->parameters().size();
+    const std::size_t wanted = callee.parameters.size();
     if (arguments.size() != wanted) {
       p_.fail(at, "function '" + callee.name + "' takes " + std::to_string(wanted) +
                       " argument" + (wanted == 1 ? "" : "s") + ", found " +
                       std::to_string(arguments.size()));
     }
+    if (callee.color_source) return color_component(callee, arguments, at);
     if (p_.plain_symbol('.')) {
-      p_.fail_unsupported(p_.here(), "'.' after a function call (a colour or vector function) "
-                                     "is not supported yet by convray");
+      p_.fail(p_.here(), "function '" + callee.name + "' gives a float: no '.' component");
     }
     FunctionNode n;
     n.op = FunctionOp::call;
     n.index = f_.add_callee(callee.compiled);
+    return f_.add(n, arguments);
+  }
+
+  // `P(x, y, z).red` of a pigment function: a colour needs its component picked.
+  std::uint32_t color_component(const UserFunction& callee,
+                                const std::vector<std::uint32_t>& arguments, TokenRef at) {
+    if (!p_.plain_symbol('.')) {
+      p_.fail(at, "function '" + callee.name + "' gives a colour: pick a component with .red, "
+                  ".green, .blue, .filter, .transmit, .gray (or .x, .y, .z)");
+    }
+    p_.advance();
+    const LexToken& name = p_.plain();
+    FunctionNode n;
+    n.op = FunctionOp::color;
+    switch (name.word) {
+      case Word::x: case Word::u: case Word::red: n.component = scene::ColorComponent::red; break;
+      case Word::y: case Word::v: case Word::green:
+        n.component = scene::ColorComponent::green;
+        break;
+      case Word::z: case Word::blue: n.component = scene::ColorComponent::blue; break;
+      case Word::t: case Word::filter: n.component = scene::ColorComponent::filter; break;
+      case Word::transmit: n.component = scene::ColorComponent::transmit; break;
+      case Word::gray: case Word::grey: n.component = scene::ColorComponent::gray; break;
+      default:
+        p_.fail_here("expected a colour component after '.', found " + p_.describe(name));
+    }
+    p_.advance();
+    n.index = f_.add_color_source(callee.color_source);
     return f_.add(n, arguments);
   }
 
@@ -255,8 +285,11 @@ class FunctionCompiler {
         word == Word::v || word == Word::t) {
       p_.fail(at, "'" + text + "' is not a parameter of function '" + name_ + "'");
     }
-    if (text == "pattern" || text == "pigment" || text == "spline" || text == "transform" ||
-        text == "internal") {
+    if (text == "pattern" || text == "pigment") {
+      p_.fail(at, "'" + text + "' can only be the whole body of a function: "
+                  "function { " + text + " { ... } }");
+    }
+    if (text == "spline" || text == "transform" || text == "internal") {
       p_.fail_unsupported(p_.loc(at), "'" + text + "' in a function is not supported yet by "
                                       "convray");
     }
@@ -338,9 +371,38 @@ void Parser::Impl::compile_internal(UserFunction& function) {
   function.compiled = std::move(compiled);
 }
 
+// `function { pigment { P } }` and `function { pattern { P } }`, of x, y and z.
+void Parser::Impl::compile_color_function(UserFunction& function) {
+  const bool pigment = settle().view() == "pigment";
+  const scene::Pigment read = items::parse_pigment(owner, {});
+  function.parameters = {"x", "y", "z"};
+  if (pigment) {
+    function.color_source = render::pigment_source(read);
+    return;
+  }
+  auto compiled = std::make_shared<scene::Function>(function.parameters);
+  std::vector<std::uint32_t> operands;
+  for (std::uint32_t i = 0; i < 3; ++i) {
+    scene::FunctionNode n;
+    n.op = scene::FunctionOp::parameter;
+    n.index = i;
+    operands.push_back(compiled->add(n));
+  }
+  scene::FunctionNode value;
+  value.op = scene::FunctionOp::color;
+  value.index = compiled->add_color_source(render::pattern_source(read.space));
+  compiled->set_root(compiled->add(value, operands));
+  function.compiled = std::move(compiled);
+}
+
 void Parser::Impl::compile_function(UserFunction& function) {
-  if (settle().word == Word::internal) {
+  const LexToken& first = settle();
+  if (first.word == Word::internal) {
     compile_internal(function);
+    return;
+  }
+  if (first.view() == "pigment" || first.view() == "pattern") {
+    compile_color_function(function);
     return;
   }
   auto compiled = std::make_shared<scene::Function>(function.parameters);

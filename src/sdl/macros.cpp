@@ -248,6 +248,7 @@ void Parser::Impl::compile_function_body(UserFunction& function) {
   moved();
   Frame& frame = push_frame(Frame::Kind::function, file, open + 1, close);
   frame.name = function.name;
+  const int blocks_open = open_blocks;
   try {
     compile_function(function);
     if (plain().kind != LexKind::end || frames.size() != depth + 1) {
@@ -255,7 +256,9 @@ void Parser::Impl::compile_function_body(UserFunction& function) {
                 describe(plain()));
     }
   } catch (const UnsupportedError& error) {
+    open_blocks = blocks_open;  // the item parsers' braces left open by the error
     function.compiled = nullptr;
+    function.color_source = nullptr;
     function.unsupported = UnsupportedItem{error.feature(), error.loc()};
   }
   frames.resize(depth);
@@ -289,6 +292,15 @@ Value Parser::Impl::call_function(const UserFunction& function, TokenRef at) {
   if (arguments.size() != wanted) {
     fail(at, "function '" + function.name + "' takes " + std::to_string(wanted) + " argument" +
                  (wanted == 1 ? "" : "s") + ", found " + std::to_string(arguments.size()));
+  }
+  if (function.color_source) {
+    const scene::Color color =
+        function.color_source->at(Vec3(arguments[0], arguments[1], arguments[2]));
+    Vector vector;
+    vector.size = 5;
+    vector.color = true;
+    vector.v = {color.rgb.r, color.rgb.g, color.rgb.b, color.filter, color.transmit};
+    return make_value(vector);
   }
   const double result = function.compiled->evaluate(arguments);
   if (!std::isfinite(result)) {

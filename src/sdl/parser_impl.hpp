@@ -123,6 +123,8 @@ struct UserFunction {
   // Compiled when declared (function_compiler.cpp); null when the body needs what convray
   // cannot evaluate yet, which is then `unsupported` (a call fails with it).
   std::shared_ptr<const scene::Function> compiled;
+  // `function { pigment { P } }`: a colour at (x, y, z) instead (compiled is null).
+  std::shared_ptr<const scene::ColorSource> color_source;
   std::optional<UnsupportedItem> unsupported;
 };
 
@@ -289,6 +291,7 @@ struct Parser::Impl {
   void compile_function_body(UserFunction& function);
   void compile_function(UserFunction& function);
   void compile_internal(UserFunction& function);
+  void compile_color_function(UserFunction& function);
   std::uint32_t find_closing_brace(std::uint32_t opened_at);
 
   // --- expressions.cpp

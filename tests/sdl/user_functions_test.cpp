@@ -77,7 +77,7 @@ TEST(UserFunctions, WhatCannotBeEvaluatedYetFailsWhereItIsUsed) {
   // Declaring is fine (functions.inc declares pattern functions); calling names the feature.
   const auto error = core_testing::expression_error(
       "#declare P = function { pattern { crackle } } P(1, 2, 3)");
-  EXPECT_NE(error.first_line.find("'pattern' in a function is not supported yet"),
+  EXPECT_NE(error.first_line.find("'crackle' is not supported yet by convray (at test.pov:1:35)"),
             std::string::npos)
       << error.first_line;
   EXPECT_NE(error.first_line.find("'P', declared at test.pov:1:14"), std::string::npos)
@@ -85,6 +85,27 @@ TEST(UserFunctions, WhatCannotBeEvaluatedYetFailsWhereItIsUsed) {
   EXPECT_EQ(core_testing::expression_error("#declare F = function { x + q } F(1, 2, 3)")
                 .first_line.rfind("undeclared identifier 'q'", 0),
             0u);
+}
+
+TEST(UserFunctions, PigmentAndPatternFunctions) {
+  // A pigment function gives the colour (POV-Ray's eval_pigment in functions.inc does this).
+  EXPECT_DOUBLE_EQ(eval_float("#declare P = function { pigment { rgb <0.2, 0.4, 0.6> } } "
+                              "P(1, 2, 3).green"),
+                   0.4);
+  // gradient x through a black-to-white map: the fractional part of x, in every channel.
+  const std::string gradient =
+      "#declare P = function { pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] } "
+      "} } ";
+  EXPECT_NEAR(eval_float(gradient + "P(2.25, 7, 7).red"), 0.25, 1e-12);
+  EXPECT_NEAR(eval_float(gradient + "#declare F = function { P(x, 0, 0).green * 4 } F(0.75, 0, 0)"),
+              0.375 * 4, 1e-12);
+  // A pattern function is the pattern's value: gradient x wraps, scale applies.
+  const std::string pattern = "#declare G = function { pattern { gradient x scale 2 } } ";
+  EXPECT_NEAR(eval_float(pattern + "G(0.5, 0, 0)"), 0.25, 1e-12);
+  EXPECT_NEAR(eval_float(pattern + "G(3.5, 0, 0)"), 0.75, 1e-12);
+  EXPECT_NE(core_testing::expression_error(gradient + "#declare F = function { P(x, y, z) } 1")
+                .first_line.find("gives a colour: pick a component"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,41 @@
+#include "render/function_sources.hpp"
+
+#include "render/patterns.hpp"
+#include "render/pigment.hpp"
+
+namespace convray::render {
+
+namespace {
+
+class PigmentSource final : public scene::ColorSource {
+ public:
+  explicit PigmentSource(scene::Pigment pigment) : pigment_(std::move(pigment)) {}
+  scene::Color at(const Vec3& point) const override { return evaluate_pigment(pigment_, point); }
+
+ private:
+  scene::Pigment pigment_;
+};
+
+class PatternSource final : public scene::ColorSource {
+ public:
+  explicit PatternSource(scene::PatternSpace space) : space_(std::move(space)) {}
+  scene::Color at(const Vec3& point) const override {
+    const double value = pattern_value(space_, point);
+    return scene::Color{Vec3(value), 0.0, 0.0};
+  }
+
+ private:
+  scene::PatternSpace space_;
+};
+
+}  // namespace
+
+std::shared_ptr<const scene::ColorSource> pigment_source(scene::Pigment pigment) {
+  return std::make_shared<PigmentSource>(std::move(pigment));
+}
+
+std::shared_ptr<const scene::ColorSource> pattern_source(scene::PatternSpace space) {
+  return std::make_shared<PatternSource>(std::move(space));
+}
+
+}  // namespace convray::render

@@ -1,0 +1,15 @@
+#pragma once
+// What user functions read from the renderer (scene/function.hpp's ColorSource):
+// `function { pigment { P } }`, the pigment's colour, and `function { pattern { P } }`, the
+// pattern's value (turbulence, frequency, phase and wave applied) as a grey.
+#include <memory>
+
+#include "scene/function.hpp"
+#include "scene/texture.hpp"
+
+namespace convray::render {
+
+std::shared_ptr<const scene::ColorSource> pigment_source(scene::Pigment pigment);
+std::shared_ptr<const scene::ColorSource> pattern_source(scene::PatternSpace space);
+
+}  // namespace convray::render
