@@ -1,5 +1,6 @@
 #include "render/function_sources.hpp"
 
+#include "render/noise.hpp"
 #include "render/patterns.hpp"
 #include "render/pigment.hpp"
 
@@ -28,7 +29,19 @@ class PatternSource final : public scene::ColorSource {
   scene::PatternSpace space_;
 };
 
+class NoiseSource final : public scene::ColorSource {
+ public:
+  scene::Color at(const Vec3& point) const override {
+    return scene::Color{Vec3(noise(point)), 0.0, 0.0};
+  }
+};
+
 }  // namespace
+
+std::shared_ptr<const scene::ColorSource> noise_source() {
+  static const auto source = std::make_shared<const NoiseSource>();
+  return source;
+}
 
 std::shared_ptr<const scene::ColorSource> pigment_source(scene::Pigment pigment) {
   return std::make_shared<PigmentSource>(std::move(pigment));

@@ -11,5 +11,8 @@ namespace convray::render {
 
 std::shared_ptr<const scene::ColorSource> pigment_source(scene::Pigment pigment);
 std::shared_ptr<const scene::ColorSource> pattern_source(scene::PatternSpace space);
+// functions.inc's f_noise3d (internal(76)): the patterns' noise (render/noise.hpp), in [0, 1],
+// as a grey.
+std::shared_ptr<const scene::ColorSource> noise_source();
 
 }  // namespace convray::render

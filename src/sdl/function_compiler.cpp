@@ -336,6 +336,27 @@ class FunctionCompiler {
   const std::string& name_;
 };
 
+// functions.inc's f_noise3d.
+constexpr int kNoise3d = 76;
+
+// f(x, y, z): the red channel (the grey) of `source` at (x, y, z).
+std::shared_ptr<const scene::Function> color_source_function(
+    std::shared_ptr<const scene::ColorSource> source) {
+  auto compiled = std::make_shared<scene::Function>(std::vector<std::string>{"x", "y", "z"});
+  std::vector<std::uint32_t> operands;
+  for (std::uint32_t i = 0; i < 3; ++i) {
+    scene::FunctionNode n;
+    n.op = scene::FunctionOp::parameter;
+    n.index = i;
+    operands.push_back(compiled->add(n));
+  }
+  scene::FunctionNode value;
+  value.op = scene::FunctionOp::color;
+  value.index = compiled->add_color_source(std::move(source));
+  compiled->set_root(compiled->add(value, operands));
+  return compiled;
+}
+
 }  // namespace
 
 // At `internal ( N )`, the whole body of functions.inc's declarations.
@@ -347,6 +368,11 @@ void Parser::Impl::compile_internal(UserFunction& function) {
   const int number = to_int(to_float(parse_expression(), number_at, "in internal()"), number_at,
                             "in internal()");
   expect_symbol(')', "after internal(N)");
+  if (number == kNoise3d) {
+    function.parameters = {"x", "y", "z"};
+    function.compiled = color_source_function(render::noise_source());
+    return;
+  }
   scene::InternalFunction internal{};
   if (!scene::internal_function_of(number, internal)) {
     fail_unsupported(loc(at), "internal function " + std::to_string(number) + " ('" +
@@ -378,21 +404,9 @@ void Parser::Impl::compile_color_function(UserFunction& function) {
   function.parameters = {"x", "y", "z"};
   if (pigment) {
     function.color_source = render::pigment_source(read);
-    return;
+  } else {
+    function.compiled = color_source_function(render::pattern_source(read.space));
   }
-  auto compiled = std::make_shared<scene::Function>(function.parameters);
-  std::vector<std::uint32_t> operands;
-  for (std::uint32_t i = 0; i < 3; ++i) {
-    scene::FunctionNode n;
-    n.op = scene::FunctionOp::parameter;
-    n.index = i;
-    operands.push_back(compiled->add(n));
-  }
-  scene::FunctionNode value;
-  value.op = scene::FunctionOp::color;
-  value.index = compiled->add_color_source(render::pattern_source(read.space));
-  compiled->set_root(compiled->add(value, operands));
-  function.compiled = std::move(compiled);
 }
 
 void Parser::Impl::compile_function(UserFunction& function) {
