@@ -81,17 +81,17 @@ void BM_TriangleCauchyField(benchmark::State& state) {
 }
 
 // The soup of scenes/kernels/model.pov under either kernel.
-convray::implicit::ConvolutionObject soup_object(bool cauchy) {
+convray::scene::ConvolutionObject soup_object(bool cauchy) {
   const auto loaded = convray::mesh::load_mesh(CONVRAY_SOURCE_DIR "/scenes/models/soup.obj");
-  convray::implicit::MeshComponent mesh;
+  convray::scene::MeshComponent mesh;
   for (const auto& t : loaded.soup.triangles) {
     const auto& v = loaded.soup.vertices;
     mesh.triangles.push_back({v[t[0]], v[t[1]], v[t[2]]});
   }
   mesh.weight = {1.0, 0.4};
-  convray::implicit::ConvolutionObject object;
+  convray::scene::ConvolutionObject object;
   object.meshes.push_back(mesh);
-  if (cauchy) object.kernel = {convray::implicit::KernelType::cauchy, kCauchySharpness};
+  if (cauchy) object.kernel = {convray::field::KernelType::cauchy, kCauchySharpness};
   return object;
 }
 
@@ -100,7 +100,7 @@ convray::implicit::ConvolutionObject soup_object(bool cauchy) {
 template <class Surface>
 void whole_mesh(benchmark::State& state, const Surface& surface) {
   const auto points = points_in(surface.bounds());
-  std::vector<typename Surface::ComponentValue> values;
+  std::vector<convray::implicit::ComponentValue> values;
   for (const Vec3& p : points) surface.component_values(p, values);
   per_point(state, points, [&](const Vec3& p) { return surface.field(p).value; });
   state.counters["triangles_per_query"] = double(values.size()) / double(points.size());

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "implicit/mesh_field.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "mesh/procedural.hpp"
 #include "polygonize/polygonize.hpp"
 
@@ -30,10 +30,8 @@ const SoupSource& icosphere_source() {
     }
     SoupSource s;
     s.field = std::make_unique<implicit::MeshField>(triangles, 0.3);
-    implicit::ConvolutionObject object;
-    object.meshes.push_back({triangles, {1.0, 0.3}});
-    s.source.supports = polygonize::support_boxes(object);
-    s.source.threshold = implicit::threshold_for_offset(1.0, 0.3, 0.1);
+    s.source.supports = polygonize::triangle_support_boxes(s.field->triangles(), 0.3);
+    s.source.threshold = field::threshold_for_offset(1.0, 0.3, 0.1);
     const implicit::MeshField* f = s.field.get();
     s.source.field = [f](const Vec3& p) { return f->field(p); };
     s.source.value = [f](const Vec3& p) { return f->value(p); };

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "fixtures/defective_soups.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "mesh/load.hpp"
 #include "mesh/procedural.hpp"
 #include "mesh/write.hpp"
@@ -162,7 +162,7 @@ int main(int argc, char** argv) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
     bench::Problem problem;
     problem.field = &field;
-    problem.threshold = implicit::threshold_for_offset(1.0, o.radius, o.offset);
+    problem.threshold = field::threshold_for_offset(1.0, o.radius, o.offset);
     problem.offset = o.offset;
     problem.cell = o.cell;
     problem.soup_bounds = soup.bounds();

@@ -24,7 +24,7 @@
 #include "geometry/world.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "mesh/load.hpp"
-#include "render/image_file.hpp"
+#include "core/image_file.hpp"
 #include "render/render_scene.hpp"
 #include "scene/quick_scene.hpp"
 #include "vertex_blob_scene.hpp"
@@ -110,7 +110,7 @@ scene::Camera table1_camera(const Options& o) {
 const Vec3 kTable1Light(-300, 500, -500);
 
 void print_counters(const render::RenderStats& s) {
-  const implicit::TraceStats& t = s.trace;
+  const TraceStats& t = s.trace;
   const double rays = double(std::max<uint64_t>(t.rays, 1));
   std::printf("camera rays: %llu\nshadow rays: %llu\nhits: %llu\nsurface queries: %llu\n",
               (unsigned long long)s.camera_rays, (unsigned long long)s.shadow_rays,
@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
     const mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh);
     const bench::VertexBlob blob = bench::make_vertex_blob(loaded.soup, o.fit_box, o.radius,
                                                            o.offset);
-    implicit::ConvolutionObject object;
+    scene::ConvolutionObject object;
     object.blob_spheres.reserve(blob.centres.size());
     for (const Vec3& c : blob.centres) object.blob_spheres.push_back({c, {1.0, o.radius}});
     object.threshold = blob.threshold;
@@ -161,8 +161,8 @@ int main(int argc, char** argv) {
       if (k + 1 < o.repeat) continue;
       print_counters(result.stats);
       if (!o.output.empty()) {
-        render::write_image_atomically(o.output, {o.width, o.height, result.film.rgb(),
-                                                  render::PixelEncoding::linear});
+        write_image_atomically(o.output, {o.width, o.height, result.film.rgb(),
+                                                  PixelEncoding::linear});
       }
     }
     std::printf("best build: %.3f s\nbest render: %.3f s\nbest total: %.3f s\n"

@@ -3,7 +3,7 @@ find_package(glm CONFIG REQUIRED)
 find_package(ZLIB REQUIRED)
 find_package(TBB CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
-find_package(PNG REQUIRED)  # PNG written directly (src/render/png_writer.cpp)
+find_package(PNG REQUIRED)  # PNG written directly (src/core/png_writer.cpp)
 find_package(OpenImageIO CONFIG REQUIRED)  # every other image format, in a plugin
 find_package(embree 3 CONFIG REQUIRED)
 find_package(pegtl CONFIG REQUIRED)

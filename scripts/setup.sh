@@ -16,7 +16,7 @@ packages=(
   build-essential cmake git pkg-config
   libglm-dev zlib1g-dev
   libembree-dev libtbb-dev libcli11-dev tao-pegtl-dev
-  libpng-dev  # PNG, every render's default format, written directly (src/render/png_writer.cpp)
+  libpng-dev  # PNG, every render's default format, written directly (src/core/png_writer.cpp)
   libopenimageio-dev openimageio-tools
   libfreetype-dev  # TrueType glyph outlines for text objects (src/font/)
   libgtest-dev libbenchmark-dev

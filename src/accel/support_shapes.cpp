@@ -8,8 +8,6 @@
 namespace convray::accel {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 Span join(const Span& a, const Span& b) {
   if (a.empty()) return b;
   if (b.empty()) return a;

@@ -6,8 +6,6 @@
 namespace convray::accel {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 // Plain doubles, so that the lane loop vectorizes after inlining.
 struct P {
   double x, y, z;

@@ -17,10 +17,9 @@
 #include "app/declared_object.hpp"
 #include "app/object_queries.hpp"
 #include "app/soup_triangles.hpp"
-#include "implicit/cauchy_surface.hpp"
-#include "implicit/convolution_surface.hpp"
+#include "implicit/placed_field.hpp"
 #include "implicit/mesh_field.hpp"
-#include "implicit/mesh_skeleton.hpp"
+#include "scene/mesh_skeleton.hpp"
 #include "mesh/load.hpp"
 #include "sdl/parser.hpp"
 #include "util/error.hpp"
@@ -147,29 +146,18 @@ int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, 
   parse_options.object_queries = geometry_object_queries();
   const sdl::ParseResult parsed = sdl::parse_file(o.scene_path, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.scene_path, o.object_name);
-  const implicit::ConvolutionObject& record = std::get<scene::Implicit>(object.shape).object;
+  const scene::ConvolutionObject& record = std::get<scene::Implicit>(object.shape).object;
   const scene::Transform& placed = object.transform;
   step.now("building the field of '" + o.object_name + "'", "give an object with fewer components");
-  // F_world(p) = F(M^-1 p), so grad F_world = M^-T grad F: the normal rule of
-  // the transform.
-  const auto answer = [&](const auto& surface) {
-    step.now("evaluating the points", kFreeMemory);
-    return answer_points(
-        [&](const Vec3& p) {
-          field::FieldSample s = surface.field(placed.inverse_point(p));
-          s.gradient = placed.normal(s.gradient);
-          return s;
-        },
-        in, out, err);
-  };
+  std::unique_ptr<const implicit::Surface> surface;
   try {
-    if (record.kernel.type == implicit::KernelType::cauchy) {
-      return answer(implicit::CauchySurface(record));
-    }
+    surface = implicit::make_surface(record);
   } catch (const std::invalid_argument& e) {
     throw InputError(object.loc, e.what());
   }
-  return answer(implicit::ConvolutionSurface(record));
+  step.now("evaluating the points", kFreeMemory);
+  return answer_points([&](const Vec3& p) { return implicit::placed_field(*surface, placed, p); },
+                       in, out, err);
 }
 
 // A file's field: its triangles through MeshField (grid and SIMD batches); a file with
@@ -183,11 +171,11 @@ int run_mesh_field(const FieldOptions& o, std::istream& in, std::ostream& out, s
     step.now("evaluating the points", kFreeMemory);
     return answer_points([&](const Vec3& p) { return field.field(p); }, in, out, err);
   }
-  implicit::ConvolutionObject object;
-  implicit::add_skeleton(implicit::skeleton_of(loaded), {o.strength, o.radius}, object);
-  const implicit::ConvolutionSurface surface(object);  // its threshold (1) is not used here
+  scene::ConvolutionObject object;
+  scene::add_skeleton(scene::skeleton_of(loaded), {o.strength, o.radius}, object);
+  const auto surface = implicit::make_surface(object);  // its threshold (1) is not used here
   step.now("evaluating the points", kFreeMemory);
-  return answer_points([&](const Vec3& p) { return surface.field(p); }, in, out, err);
+  return answer_points([&](const Vec3& p) { return surface->field(p); }, in, out, err);
 }
 
 }  // namespace

@@ -15,11 +15,10 @@
 #include "app/size_check.hpp"
 #include "app/usage_error.hpp"
 #include "app/soup_triangles.hpp"
-#include "implicit/cauchy_surface.hpp"
-#include "implicit/convolution_surface.hpp"
+#include "implicit/placed_field.hpp"
 #include "implicit/mesh_field.hpp"
-#include "implicit/mesh_skeleton.hpp"
-#include "implicit/threshold.hpp"
+#include "scene/mesh_skeleton.hpp"
+#include "field/threshold.hpp"
 #include "mesh/format.hpp"
 #include "mesh/load.hpp"
 #include "mesh/skeleton_stats.hpp"
@@ -27,7 +26,7 @@
 #include "polygonize/outer_shells.hpp"
 #include "polygonize/size_estimate.hpp"
 #include "polygonize/surface_error.hpp"
-#include "render/progress.hpp"
+#include "core/progress.hpp"
 #include "sdl/parser.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
@@ -52,17 +51,15 @@ struct PreparedField {
 // holds on the exact field.
 void prepare_triangles(PreparedField& prepared, const mesh::LoadedMesh& loaded, double strength) {
   auto field = std::make_shared<implicit::MeshField>(soup_triangles(loaded.soup), prepared.radius, strength);
-  implicit::ConvolutionObject supports_only;
-  supports_only.meshes.push_back({field->triangles(), {strength, prepared.radius}});
-  prepared.source.supports = polygonize::support_boxes(supports_only);
+  prepared.source.supports = polygonize::triangle_support_boxes(field->triangles(), prepared.radius);
   prepared.source.field = [field](const Vec3& p) { return field->field_exact(p); };
   prepared.source.value = [field](const Vec3& p) { return field->value(p); };
   prepared.owner = field;
 }
 
-template <typename Surface>
-void place_field(PreparedField& prepared, std::shared_ptr<const Surface> surface,
-                 const std::vector<Box3>& supports, const scene::Transform& placed);
+// The field of `object` placed by `placed` (objects the kernel cannot describe: `loc`).
+void place_surface(PreparedField& prepared, const scene::ConvolutionObject& object,
+                   const scene::Transform& placed, const SourceLoc& loc);
 
 PreparedField prepare_mesh(const PolygonizeOptions& o) {
   mesh::LoadedMesh loaded = mesh::load_mesh(o.input);
@@ -72,9 +69,9 @@ PreparedField prepare_mesh(const PolygonizeOptions& o) {
                              : mesh::advise_radius(mesh::compute_stats(loaded.soup),
                                                    mesh::compute_skeleton_stats(loaded))
                                    .radius;
-  implicit::MeshSkeleton skeleton = implicit::skeleton_of(loaded);
+  scene::MeshSkeleton skeleton = scene::skeleton_of(loaded);
   try {
-    prepared.source.threshold = implicit::resolve_threshold(o.strength, prepared.radius, o.offset,
+    prepared.source.threshold = field::resolve_threshold(o.strength, prepared.radius, o.offset,
                                                             o.threshold, skeleton.offset_from());
   } catch (const std::invalid_argument& e) {
     throw InputError(kCommandLine, e.what());
@@ -84,15 +81,14 @@ PreparedField prepare_mesh(const PolygonizeOptions& o) {
     return prepared;
   }
   // Segments and points: the exact field of the whole skeleton's convolution surface.
-  implicit::ConvolutionObject object;
+  scene::ConvolutionObject object;
   object.threshold = prepared.source.threshold;
-  implicit::add_skeleton(std::move(skeleton), {o.strength, prepared.radius}, object);
-  place_field(prepared, std::make_shared<const implicit::ConvolutionSurface>(object),
-              polygonize::support_boxes(object), scene::Transform{});
+  scene::add_skeleton(std::move(skeleton), {o.strength, prepared.radius}, object);
+  place_surface(prepared, object, scene::Transform{}, kCommandLine);
   return prepared;
 }
 
-double smallest_radius(const implicit::ConvolutionObject& object) {
+double smallest_radius(const scene::ConvolutionObject& object) {
   double r = std::numeric_limits<double>::infinity();
   for (const auto& c : object.meshes) r = std::min(r, c.weight.radius);
   for (const auto& c : object.segments) r = std::min(r, c.weight.radius);
@@ -103,18 +99,17 @@ double smallest_radius(const implicit::ConvolutionObject& object) {
   return r;
 }
 
-// The field of `surface` placed by `placed`: F_world(p) = F(M^-1 p), so grad F_world =
-// M^-T grad F; its support boxes are placed with it.
-template <typename Surface>
-void place_field(PreparedField& prepared, std::shared_ptr<const Surface> surface,
-                 const std::vector<Box3>& supports, const scene::Transform& placed) {
-  for (const Box3& box : supports) {
-    prepared.source.supports.push_back(polygonize::transform_box(placed.forward(), box));
+void place_surface(PreparedField& prepared, const scene::ConvolutionObject& object,
+                   const scene::Transform& placed, const SourceLoc& loc) {
+  std::shared_ptr<const implicit::Surface> surface;
+  try {
+    surface = implicit::make_surface(object);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(loc, e.what());
   }
+  prepared.source.supports = implicit::placed_support_boxes(*surface, placed);
   prepared.source.field = [surface, placed](const Vec3& p) {
-    field::FieldSample s = surface->field(placed.inverse_point(p));
-    s.gradient = placed.normal(s.gradient);
-    return s;
+    return implicit::placed_field(*surface, placed, p);
   };
   prepared.owner = surface;
 }
@@ -127,7 +122,7 @@ PreparedField prepare_scene(const PolygonizeOptions& o) {
   parse_options.object_queries = geometry_object_queries();
   const sdl::ParseResult parsed = sdl::parse_file(o.input, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.input, o.object_name);
-  const implicit::ConvolutionObject& convolution = std::get<scene::Implicit>(object.shape).object;
+  const scene::ConvolutionObject& convolution = std::get<scene::Implicit>(object.shape).object;
   PreparedField prepared;
   prepared.radius = smallest_radius(convolution);
   if (!std::isfinite(prepared.radius)) {
@@ -138,20 +133,9 @@ PreparedField prepare_scene(const PolygonizeOptions& o) {
   prepared.source.threshold = o.threshold.value_or(convolution.threshold);
   const scene::Transform placed = object.transform;
   if (placed.is_similarity(1e-9)) prepared.radius *= placed.uniform_scale();
-  if (convolution.kernel.type == implicit::KernelType::cauchy) {
-    // McCormack and Sherstyuk's kernel, truncated per primitive by its box: the field jumps
-    // at the boxes' faces, where no vertex can meet |F - T| <= 1e-6 T (reported).
-    std::shared_ptr<const implicit::CauchySurface> surface;
-    try {
-      surface = std::make_shared<const implicit::CauchySurface>(convolution);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(object.loc, e.what());
-    }
-    place_field(prepared, surface, surface->support_boxes(), placed);
-  } else {
-    place_field(prepared, std::make_shared<const implicit::ConvolutionSurface>(convolution),
-                polygonize::support_boxes(convolution), placed);
-  }
+  // Under kernel cauchy the field jumps at the truncation boxes' faces, where no vertex can
+  // meet |F - T| <= 1e-6 T (reported).
+  place_surface(prepared, convolution, placed, object.loc);
   return prepared;
 }
 
@@ -218,13 +202,13 @@ void size_pass(const polygonize::FieldSource& source, double cell, bool predicte
 }
 
 Extraction extract(const PreparedField& prepared, const PolygonizeOptions& o, std::ostream& err) {
-  std::unique_ptr<render::Progress> progress;
+  std::unique_ptr<Progress> progress;
   polygonize::PolygonizeOptions options;
   options.before_pass = [&](double cell) { size_pass(prepared.source, cell, false, o, err); };
   options.on_predicted_cell = [&](double cell) { size_pass(prepared.source, cell, true, o, err); };
-  const bool terminal = render::Progress::stderr_is_terminal();
+  const bool terminal = Progress::stderr_is_terminal();
   options.on_start = [&](uint64_t blocks) {
-    progress = std::make_unique<render::Progress>("polygonize", blocks, err, terminal);
+    progress = std::make_unique<Progress>("polygonize", blocks, err, terminal);
   };
   options.on_blocks_done = [&](uint64_t blocks) { progress->advance(blocks); };
   Extraction result;

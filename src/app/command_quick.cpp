@@ -15,13 +15,13 @@
 #include "app/usage_error.hpp"
 #include "geometry/implicit_shape.hpp"
 #include "geometry/world.hpp"
-#include "implicit/convolution_surface.hpp"
-#include "implicit/mesh_skeleton.hpp"
-#include "implicit/threshold.hpp"
+#include "implicit/surface.hpp"
+#include "scene/mesh_skeleton.hpp"
+#include "field/threshold.hpp"
 #include "mesh/load.hpp"
 #include "mesh/skeleton_stats.hpp"
-#include "render/image_file.hpp"
-#include "render/progress.hpp"
+#include "core/image_file.hpp"
+#include "core/progress.hpp"
 #include "render/render_scene.hpp"
 #include "util/error.hpp"
 
@@ -47,16 +47,16 @@ struct PhaseTimes {
 // segments, else its points) for a skeleton of strength 1; a bad offset is a command-line
 // error.
 double quick_threshold(const QuickOptions& o, double radius,
-                       implicit::OffsetFrom from = implicit::OffsetFrom::plane) {
+                       field::OffsetFrom from = field::OffsetFrom::plane) {
   try {
-    return implicit::resolve_threshold(1.0, radius, o.offset, o.threshold, from);
+    return field::resolve_threshold(1.0, radius, o.offset, o.threshold, from);
   } catch (const std::invalid_argument& e) {
     throw InputError(kCommandLine, e.what());
   }
 }
 
 struct QuickObject {
-  implicit::ConvolutionObject object;  // one file's skeleton, strength 1
+  scene::ConvolutionObject object;  // one file's skeleton, strength 1
   double radius = 0.0;
   size_t triangles = 0, segments = 0, points = 0;
 };
@@ -71,12 +71,12 @@ QuickObject load_object(const QuickOptions& o) {
                           : mesh::advise_radius(mesh::compute_stats(loaded.soup),
                                                 mesh::compute_skeleton_stats(loaded))
                                 .radius;
-  implicit::MeshSkeleton skeleton = implicit::skeleton_of(loaded);
+  scene::MeshSkeleton skeleton = scene::skeleton_of(loaded);
   model.triangles = skeleton.triangles.size();
   model.segments = skeleton.segments.size();
   model.points = skeleton.points.size();
   model.object.threshold = quick_threshold(o, model.radius, skeleton.offset_from());
-  implicit::add_skeleton(std::move(skeleton), {1.0, model.radius}, model.object);
+  scene::add_skeleton(std::move(skeleton), {1.0, model.radius}, model.object);
   return model;
 }
 
@@ -106,14 +106,14 @@ scene::LookAtView camera_view(const QuickOptions& o, const Box3& bounds) {
 
 // The one convolution object of a quick scene (placed as it is: no transform), as the world
 // built it.
-const implicit::ConvolutionSurface& quick_surface(const geometry::World& world) {
+const implicit::Surface& quick_surface(const geometry::World& world) {
   return dynamic_cast<const geometry::ImplicitShape&>(world.shape(0)).surface();
 }
 
-void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surface,
+void print_stats(const QuickOptions& o, const implicit::Surface& surface,
                  const QuickObject& model, const render::RenderStats& s, const PhaseTimes& t,
                  std::ostream& out) {
-  const implicit::TraceStats& trace = s.trace;
+  const TraceStats& trace = s.trace;
   const double per_query = trace.rays ? double(trace.primitives) / double(trace.rays) : 0.0;
   const size_t primitives = model.triangles + model.segments + model.points;
   const size_t bytes = surface.memory_bytes();
@@ -146,7 +146,7 @@ void print_stats(const QuickOptions& o, const implicit::ConvolutionSurface& surf
 // The whole command once the options are known to be well formed.
 void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err, CommandStep& step) {
   // Everything that can be checked before the work starts is checked first.
-  render::check_image_destination(o.output);
+  check_image_destination(o.output);
   refuse_unless_image_fits(o.width, o.height, "give a smaller --size", o.force);
   if (o.radius) quick_threshold(o, *o.radius);
   if (o.camera && o.look_at) make_camera(camera_view(o, Box3{}));
@@ -179,15 +179,15 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err, C
   // A bar only where someone watches: on a terminal, never into a pipe or a log file.
   step.now("rendering the " + std::to_string(o.width) + "x" + std::to_string(o.height) + " image",
            "give a smaller --size");
-  render::Progress progress("render", uint64_t(o.width) * uint64_t(o.height), err,
-                            render::Progress::stderr_is_terminal());
+  Progress progress("render", uint64_t(o.width) * uint64_t(o.height), err,
+                            Progress::stderr_is_terminal());
   const render::RenderResult result = render::render_scene(view, world, settings, &progress);
   times.render = seconds_since(start);
 
   start = Clock::now();
   step.now("writing " + o.output, "give a smaller --size");
-  render::write_image_atomically(
-      o.output, {o.width, o.height, result.film.rgb(), render::PixelEncoding::linear});
+  write_image_atomically(
+      o.output, {o.width, o.height, result.film.rgb(), PixelEncoding::linear});
   times.write = seconds_since(start);
 
   out << "quick: " << o.mesh_path << " (" << skeleton_summary(model) << ", R = " << number(radius)

@@ -20,8 +20,8 @@
 #include "app/video.hpp"
 #include "geometry/world.hpp"
 #include "implicit/support_cache.hpp"
-#include "render/image_file.hpp"
-#include "render/progress.hpp"
+#include "core/image_file.hpp"
+#include "core/progress.hpp"
 #include "render/render_scene.hpp"
 #include "sdl/mesh_library.hpp"
 #include "sdl/parser.hpp"
@@ -129,17 +129,17 @@ class FrameRenderer {
     step_.now("rendering the " + std::to_string(o_.width) + "x" + std::to_string(o_.height) +
                   " image" + label, "give a smaller +W and +H");
     // A bar only where someone watches: on a terminal, never into a pipe or a log file.
-    render::Progress progress(progress_label(frame, position),
+    Progress progress(progress_label(frame, position),
                               uint64_t(o_.width) * uint64_t(o_.height), err_,
-                              render::Progress::stderr_is_terminal());
+                              Progress::stderr_is_terminal());
     const render::RenderResult result =
         render::render_scene(parsed.scene, world, render_settings(o_), &progress);
     times.render = seconds_since(start);
 
     start = Clock::now();
     step_.now("writing " + file, "give a smaller +W and +H");
-    render::write_image_atomically(
-        file, {o_.width, o_.height, result.film.rgb(), render::PixelEncoding::linear});
+    write_image_atomically(
+        file, {o_.width, o_.height, result.film.rgb(), PixelEncoding::linear});
     times.write = seconds_since(start);
     report(frame, position, file, parsed.scene.objects.size(), times);
     if (o_.stats) print_stats(result.stats, times, hierarchies_, out_);
@@ -184,7 +184,7 @@ void check_before_rendering(const RenderOptions& o) {
       throw InputError({o.output}, "cannot create the output folder: " + error.message());
     }
   }
-  render::check_image_destination(o.output);
+  check_image_destination(o.output);
   refuse_unless_image_fits(o.width, o.height, "give a smaller +W and +H", o.force);
   if (!o.video.empty()) check_video_tools(o.video);
 }
@@ -232,7 +232,7 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err,
     const FrameClock& frame = plan.frames[i];
     const std::string file = file_of(o, plan, frame);
     files.push_back(file);
-    if (o.continue_trace && render::image_file_is_complete(file, o.width, o.height)) {
+    if (o.continue_trace && image_file_is_complete(file, o.width, o.height)) {
       ++skipped;
       if (!o.quiet) out << "convray: " << file << " is complete; skipped (+C)\n";
       continue;

@@ -15,9 +15,9 @@
 #include "app/usage_error.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/mesh_field.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "mesh/load.hpp"
-#include "render/image_file.hpp"
+#include "core/image_file.hpp"
 #include "util/error.hpp"
 
 namespace convray::app {
@@ -93,11 +93,11 @@ void draw_cross_section(const std::vector<field::Triangle>& triangles, const Pla
 int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
   CommandStep step("reading " + o.mesh_path, kFreeMemory);
   try {
-    render::check_image_destination(o.output);  // before the work, not after it
+    check_image_destination(o.output);  // before the work, not after it
     refuse_unless_image_fits(o.width, o.height, "give a smaller --size", o.force);
     double threshold = 0.0;
     try {
-      threshold = implicit::resolve_threshold(o.strength, o.radius, o.offset, o.threshold);
+      threshold = field::resolve_threshold(o.strength, o.radius, o.offset, o.threshold);
     } catch (const std::invalid_argument& e) {
       throw InputError({"command line"}, e.what());
     }
@@ -129,9 +129,9 @@ int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
     draw_cross_section(field.triangles(), frame, o.width, o.height, image);
     // The ramp's colours are meant for display as they are: no sRGB encoding on top.
     static_assert(sizeof(Rgb) == 3 * sizeof(float), "Rgb pixels must pack as float triples");
-    render::write_image_atomically(
+    write_image_atomically(
         o.output, {o.width, o.height, std::span<const float>(image.front().data(), 3 * image.size()),
-                   render::PixelEncoding::display});
+                   PixelEncoding::display});
     out << "slice " << o.axis << " = " << o.at << " of " << o.mesh_path << " (" << field.triangle_count()
         << " triangles, R = " << o.radius << ", T = " << threshold << "): wrote " << o.output
         << " (" << o.width << "x" << o.height << ")\n";

@@ -24,8 +24,8 @@ class GeometryQueries final : public sdl::ObjectQueries {
   std::optional<sdl::TraceHit> trace(const scene::Object& object, const Vec3& origin,
                                      const Vec3& direction) const override {
     const geometry::ShapePtr shape = geometry::build_shape(object);
-    const geometry::Ray ray{origin, glm::normalize(direction)};
-    geometry::TraceStats stats;
+    const Ray ray{origin, glm::normalize(direction)};
+    TraceStats stats;
     const auto crossing = shape->first_crossing(ray, 0.0, INFINITY, stats);
     if (!crossing) return std::nullopt;
     return sdl::TraceHit{ray.at(crossing->t), crossing->normal};

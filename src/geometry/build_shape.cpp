@@ -6,7 +6,6 @@
 #include <string>
 
 #include "geometry/box.hpp"
-#include "geometry/cauchy_shape.hpp"
 #include "geometry/conic_prism.hpp"
 #include "geometry/cone.hpp"
 #include "geometry/csg.hpp"
@@ -222,9 +221,6 @@ ShapePtr ShapeBuilder::make(const scene::TriangleMesh& m, const Inherited& own) 
 }
 
 ShapePtr ShapeBuilder::make(const scene::Implicit& i, const Inherited& own) const {
-  if (i.object.kernel.type == implicit::KernelType::cauchy) {
-    return std::make_unique<CauchyShape>(i, surface_for(own));
-  }
   return std::make_unique<ImplicitShape>(i, surface_for(own), cache_, tracer_);
 }
 

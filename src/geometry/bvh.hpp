@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/bounds.hpp"
-#include "implicit/ray.hpp"
+#include "core/box.hpp"
+#include "core/ray.hpp"
 
 namespace convray::geometry {
 
@@ -31,7 +31,7 @@ class Bvh {
   // Calls visit(primitive, tmax) for every primitive of every leaf whose box meets the ray
   // within [tmin, tmax]; visit may lower tmax (double&) to prune what follows.
   template <class Visit>
-  void traverse(const implicit::Ray& ray, double tmin, double& tmax, Visit&& visit) const;
+  void traverse(const Ray& ray, double tmin, double& tmax, Visit&& visit) const;
 
   // Calls visit(primitive) for every primitive of every leaf whose box contains p (callers
   // test the primitive's own box) until visit returns true; returns whether one did.
@@ -77,7 +77,7 @@ inline bool ray_meets_box(const Vec3& origin, const Vec3& inverse_direction, con
 }
 
 template <class Visit>
-void Bvh::traverse(const implicit::Ray& ray, double tmin, double& tmax, Visit&& visit) const {
+void Bvh::traverse(const Ray& ray, double tmin, double& tmax, Visit&& visit) const {
   if (nodes_.empty()) return;
   const Vec3 inverse = 1.0 / ray.direction;
   uint32_t stack[128];

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry/polynomial.hpp"
 
 namespace convray::geometry {

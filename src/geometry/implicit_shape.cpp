@@ -9,8 +9,7 @@
 #include "field/point.hpp"
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
-#include "geometry/bounds.hpp"
-#include "geometry/first_open_crossing.hpp"
+#include "core/box.hpp"
 
 namespace convray::geometry {
 
@@ -21,7 +20,7 @@ namespace {
 // POV-Ray's blob counts points within this of the threshold as inside.
 constexpr double kBlobInsideTolerance = 1e-6;
 
-size_t component_count(const implicit::ConvolutionObject& o, Kind kind) {
+size_t component_count(const scene::ConvolutionObject& o, Kind kind) {
   switch (kind) {
     case Kind::mesh:
       return o.meshes.size();
@@ -43,14 +42,14 @@ size_t component_count(const implicit::ConvolutionObject& o, Kind kind) {
 
 ImplicitShape::ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surface,
                              implicit::SupportCache* cache, implicit::Tracer tracer)
-    : surface_(record.object, cache, tracer),
+    : surface_(implicit::make_surface(record.object, cache, tracer)),
       is_blob_(record.is_blob),
       object_surface_(std::move(surface)) {
   if (!record.component_textures.empty()) index_components(record);
 }
 
 void ImplicitShape::index_components(const scene::Implicit& record) {
-  const implicit::ConvolutionObject& object = record.object;
+  const scene::ConvolutionObject& object = record.object;
   surface_of_.resize(6);
   for (int k = 0; k < 6; ++k) {
     surface_of_[size_t(k)].assign(component_count(object, Kind(k)), object_surface_.get());
@@ -73,11 +72,11 @@ void ImplicitShape::index_components(const scene::Implicit& record) {
 
 const SurfaceInfo* ImplicitShape::surface_at(const Vec3& p) const {
   if (surface_of_.empty()) return object_surface_.get();
-  thread_local std::vector<implicit::ConvolutionSurface::ComponentValue> values;
-  thread_local std::vector<implicit::ConvolutionSurface::ComponentValue> sums;
+  thread_local std::vector<implicit::ComponentValue> values;
+  thread_local std::vector<implicit::ComponentValue> sums;
   values.clear();
   sums.clear();
-  surface_.component_values(p, values);
+  surface_->component_values(p, values);
   // Few components reach any one point (a mesh's many triangles are one component).
   for (const auto& v : values) {
     auto it = std::find_if(sums.begin(), sums.end(),
@@ -99,32 +98,40 @@ const SurfaceInfo* ImplicitShape::surface_at(const Vec3& p) const {
   return dominant;
 }
 
-Box3 ImplicitShape::bounds() const { return surface_.bounds(); }
+Box3 ImplicitShape::bounds() const { return surface_->bounds(); }
 
 void ImplicitShape::crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
                               TraceStats& stats) const {
-  // Roots are searched where the field can be non-zero; the support box is wider than the
-  // surface, so no crossing sits on its faces.
+  // Crossings are searched where the field can be non-zero; the support box is wider than the
+  // surface, so no smooth crossing sits on its faces.
   double t0 = tmin, t1 = tmax;
-  if (!clip_to_box(ray, surface_.bounds(), t0, t1)) return;
-  thread_local std::vector<double> roots;  // not re-entered: roots() calls no shape
-  roots.clear();
-  surface_.roots(ray, t0, t1, roots, stats);
-  for (const double t : roots) {
-    if (!(t > tmin && t < tmax)) continue;
-    const implicit::SurfaceHit hit = implicit::make_surface_hit(surface_, ray, t);
-    out.push_back({t, hit.normal, surface_at(hit.point)});
+  if (!clip_to_box(ray, surface_->bounds(), t0, t1)) return;
+  thread_local std::vector<SurfaceHit> hits;  // not re-entered: hits() calls no shape
+  hits.clear();
+  surface_->hits(ray, t0, t1, hits, stats);
+  for (const SurfaceHit& hit : hits) {
+    if (hit.t > tmin && hit.t < tmax) out.push_back({hit.t, hit.normal, surface_at(hit.point)});
   }
 }
 
 std::optional<Crossing> ImplicitShape::first_crossing(const Ray& ray, double tmin, double tmax,
                                                       TraceStats& stats) const {
-  return first_open_crossing(*this, surface_, ray, tmin, tmax, stats);
+  // The surface searches the closed interval, so a crossing on one of its ends sends us to
+  // the full list for the next one.
+  double t0 = tmin, t1 = tmax;
+  if (!clip_to_box(ray, surface_->bounds(), t0, t1)) return std::nullopt;
+  const auto hit = surface_->first_hit(ray, t0, t1, stats);
+  if (!hit) return std::nullopt;
+  if (hit->t > tmin && hit->t < tmax) return Crossing{hit->t, hit->normal, surface_at(hit->point)};
+  std::vector<Crossing> all;
+  crossings(ray, tmin, tmax, all, stats);
+  if (all.empty()) return std::nullopt;
+  return all.front();
 }
 
 bool ImplicitShape::inside(const Vec3& p) const {
-  const double value = surface_.field(p).value;
-  const double threshold = surface_.threshold();
+  const double value = surface_->field(p).value;
+  const double threshold = surface_->threshold();
   return is_blob_ ? value > threshold - kBlobInsideTolerance : value >= threshold;
 }
 

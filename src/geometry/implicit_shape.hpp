@@ -1,7 +1,8 @@
 #pragma once
-// POV-Ray's `blob` and our `convolution` object: the surface F = T of a ConvolutionSurface
-// in the object's own space. Crossings are the surface's roots (each polished on the exact
-// field), normals -grad F / |grad F|. Inside is F >= T; for a blob POV-Ray's F > T - 1e-6.
+// POV-Ray's `blob` and our `convolution` object, of either kernel: the surface F = T of an
+// implicit::Surface (made by implicit::make_surface) in the object's own space. Crossings are
+// the surface's hits (each refined on the exact field), normals -grad F / |grad F| (or a
+// truncation box's face, kernel cauchy). Inside is F >= T; for a blob POV-Ray's F > T - 1e-6.
 //
 // Per-component textures: POV-Ray blends the textures of the components by their share of
 // the field at the point. We simplify to the dominant one: a crossing takes the surface
@@ -9,20 +10,20 @@
 // texture of their own count as the object's). Only the primitives whose support holds the
 // point are asked (the support index's point query), so a mesh component of 100,000
 // triangles costs what its few nearby triangles cost.
+#include <memory>
 #include <vector>
 
 #include "geometry/primitive.hpp"
-#include "implicit/convolution_surface.hpp"
+#include "implicit/surface.hpp"
 #include "scene/object.hpp"
 
 namespace convray::geometry {
 
 class ImplicitShape final : public Shape {
  public:
-  // Throws std::invalid_argument for what ConvolutionSurface refuses (a radius that is not
-  // positive, a threshold that is not positive) and for component textures that name no
-  // component. `cache` (optional) provides the meshes' hierarchies (support_cache.hpp);
-  // `tracer` picks the fast path or the exact reference twin.
+  // Throws std::invalid_argument for what the kernel's surface refuses (a radius that is not
+  // positive, a threshold that is not positive, arcs under kernel cauchy) and for component
+  // textures that name no component. `cache` and `tracer` are make_surface's.
   ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surface,
                 implicit::SupportCache* cache = nullptr,
                 implicit::Tracer tracer = implicit::Tracer::fast);
@@ -34,14 +35,14 @@ class ImplicitShape final : public Shape {
                                          TraceStats& stats) const override;
   bool inside(const Vec3& p) const override;
 
-  const implicit::ConvolutionSurface& surface() const { return surface_; }
+  const implicit::Surface& surface() const { return *surface_; }
   // The surface description a crossing at p takes (the dominant component's).
   const SurfaceInfo* surface_at(const Vec3& p) const;
 
  private:
   void index_components(const scene::Implicit& record);
 
-  implicit::ConvolutionSurface surface_;
+  std::unique_ptr<const implicit::Surface> surface_;
   bool is_blob_;
   SurfaceInfoPtr object_surface_;
   // Only when some component has its own texture: each component's surface description, by

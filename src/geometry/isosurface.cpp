@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "implicit/bracket_refine.hpp"
 
 namespace convray::geometry {

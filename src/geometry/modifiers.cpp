@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 
 namespace convray::geometry {
 

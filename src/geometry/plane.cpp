@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 
 namespace convray::geometry {
 

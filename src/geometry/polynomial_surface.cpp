@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 
 namespace convray::geometry {
 namespace {

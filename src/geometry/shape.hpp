@@ -6,15 +6,12 @@
 #include <optional>
 #include <vector>
 
-#include "implicit/ray.hpp"
-#include "implicit/trace_stats.hpp"
+#include "core/ray.hpp"
+#include "core/trace_stats.hpp"
 #include "scene/texture.hpp"
 #include "util/math.hpp"
 
 namespace convray::geometry {
-
-using implicit::Ray;
-using implicit::TraceStats;
 
 // What the renderer needs to shade a surface: resolved at build time (a CSG child without a
 // texture gets its parent's, an object without any gets the default texture), owned by the

@@ -1,14 +1,14 @@
 #include "geometry/transformed.hpp"
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 
 namespace convray::geometry {
 
 TransformedShape::TransformedShape(ShapePtr child, const scene::Transform& transform)
     : child_(std::move(child)),
       transform_(transform),
-      bounds_(transform_box(transform, child_->bounds())),
-      inside_bounds_(transform_box(transform, child_->inside_bounds())) {}
+      bounds_(transform_box(transform.forward(), child_->bounds())),
+      inside_bounds_(transform_box(transform.forward(), child_->inside_bounds())) {}
 
 Box3 TransformedShape::bounds() const { return bounds_; }
 Box3 TransformedShape::inside_bounds() const { return inside_bounds_; }

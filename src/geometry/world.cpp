@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry/bvh.hpp"
 
 namespace convray::geometry {

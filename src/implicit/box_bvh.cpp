@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "implicit/ray_box.hpp"
+#include "core/box.hpp"
 
 namespace convray::implicit {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "implicit/ray.hpp"
+#include "core/ray.hpp"
 #include "util/math.hpp"
 
 namespace convray::implicit {

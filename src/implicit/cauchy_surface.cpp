@@ -41,7 +41,7 @@ Box3 grown(Box3 box, double margin) {
 
 }  // namespace
 
-CauchySurface::CauchySurface(const ConvolutionObject& object)
+CauchySurface::CauchySurface(const scene::ConvolutionObject& object)
     : s_(object.kernel.sharpness), threshold_(object.threshold) {
   require(object.arcs.empty(),
           "kernel cauchy supports points, segments and triangles (meshes), not arcs");
@@ -52,7 +52,7 @@ CauchySurface::CauchySurface(const ConvolutionObject& object)
   std::vector<Box3> boxes;
   double smallest_margin = 1.0 / s_;
   const double no_cap = std::numeric_limits<double>::infinity();
-  const auto add = [&](CauchyPrimitive primitive, const Weight& weight, int corners, double measure,
+  const auto add = [&](CauchyPrimitive primitive, const scene::Weight& weight, int corners, double measure,
                        double cap) {
     require(weight.radius > 0.0 && std::isfinite(weight.radius),
             "kernel cauchy: the truncation radius must be positive");
@@ -65,14 +65,14 @@ CauchySurface::CauchySurface(const ConvolutionObject& object)
     smallest_margin = std::min(smallest_margin, weight.radius);
   };
   for (size_t m = 0; m < object.meshes.size(); ++m) {
-    const MeshComponent& mesh = object.meshes[m];
+    const scene::MeshComponent& mesh = object.meshes[m];
     for (const field::Triangle& t : mesh.triangles) {
       const double area = 0.5 * glm::length(glm::cross(t.b - t.a, t.c - t.a));
       if (!(area > 0.0)) continue;  // zero field: nothing to truncate
       CauchyPrimitive p;
       p.shape = CauchyPrimitive::Shape::triangle;
       p.v[0] = t.a, p.v[1] = t.b, p.v[2] = t.c;
-      p.component = {ComponentKind::mesh, uint32_t(m)};
+      p.component = {scene::ComponentKind::mesh, uint32_t(m)};
       add(p, mesh.weight, 3, area, kPi * kPi / (2.0 * s_));
     }
   }
@@ -81,13 +81,13 @@ CauchySurface::CauchySurface(const ConvolutionObject& object)
     CauchyPrimitive p;
     p.shape = CauchyPrimitive::Shape::segment;
     p.v[0] = seg.a, p.v[1] = seg.b;
-    p.component = {ComponentKind::segment, uint32_t(i)};
+    p.component = {scene::ComponentKind::segment, uint32_t(i)};
     add(p, object.segments[i].weight, 2, glm::length(seg.b - seg.a), no_cap);
   }
   for (size_t i = 0; i < object.points.size(); ++i) {
     CauchyPrimitive p;
     p.v[0] = object.points[i].center;
-    p.component = {ComponentKind::point, uint32_t(i)};
+    p.component = {scene::ComponentKind::point, uint32_t(i)};
     add(p, object.points[i].weight, 1, 1.0, no_cap);
   }
   min_step_ = kMinStepFraction * smallest_margin;

@@ -10,16 +10,18 @@
 // piece F - T is marched with steps its Lipschitz bound makes safe (the sum over the active
 // primitives of strength x the bound on their gradient), sign changes are refined on the
 // exact field, and a sign change of F - T across a box face is a crossing too (on the face).
-// The quartic kernel's ConvolutionSurface is a separate class, untouched by any of this.
+// Both kernels answer through the Surface interface (surface.hpp); the quartic kernel's
+// ConvolutionSurface shares none of this march.
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "field/sample.hpp"
 #include "implicit/box_bvh.hpp"
-#include "implicit/convolution_object.hpp"
-#include "implicit/ray.hpp"
-#include "implicit/trace_stats.hpp"
+#include "scene/convolution_object.hpp"
+#include "implicit/surface.hpp"
+#include "core/ray.hpp"
+#include "core/trace_stats.hpp"
 
 namespace convray::implicit {
 
@@ -34,49 +36,45 @@ struct CauchyPrimitive {
   double weighted_measure = 0.0;
   double slope_cap = 0.0;
   Box3 extent;             // the primitive's own bounding box (not grown)
-  ComponentRef component;  // the component it belongs to (a mesh's triangles: the mesh)
+  scene::ComponentRef component;  // the component it belongs to (a mesh's triangles: the mesh)
 };
 
-class CauchySurface {
+class CauchySurface final : public Surface {
  public:
   // Throws std::invalid_argument for an object the Cauchy kernel cannot describe: arcs or
   // blob components (no closed form here), a sharpness, radius or threshold that is not
   // positive and finite.
-  explicit CauchySurface(const ConvolutionObject& object);
+  explicit CauchySurface(const scene::ConvolutionObject& object);
 
-  double threshold() const { return threshold_; }
+  double threshold() const override { return threshold_; }
   double sharpness() const { return s_; }
   // The union of the truncation boxes: F = 0 outside.
-  Box3 bounds() const { return bvh_.bounds(); }
-  size_t primitive_count() const { return primitives_.size(); }
-  size_t memory_bytes() const;
+  Box3 bounds() const override { return bvh_.bounds(); }
+  size_t primitive_count() const override { return primitives_.size(); }
+  size_t memory_bytes() const override;
   const std::vector<CauchyPrimitive>& primitives() const { return primitives_; }
   // The truncation boxes in object space: primitive i's field is zero outside box i.
-  const std::vector<Box3>& support_boxes() const { return bvh_.boxes(); }
+  std::vector<Box3> support_boxes() const override { return bvh_.boxes(); }
 
   // strength x the untruncated closed-form field of primitive i at p.
   field::FieldSample primitive_field(size_t i, const Vec3& p) const;
   double primitive_value(size_t i, const Vec3& p) const;
   // The truncated field: the sum over the primitives whose (closed) box holds p.
-  field::FieldSample field(const Vec3& p) const;
+  field::FieldSample field(const Vec3& p) const override;
 
   // Each contributing primitive's weighted field at p, by component (for component textures).
-  struct ComponentValue {
-    ComponentRef component;
-    double value = 0.0;
-  };
-  void component_values(const Vec3& p, std::vector<ComponentValue>& out) const;
+  void component_values(const Vec3& p, std::vector<ComponentValue>& out) const override;
 
   // Every crossing in [tmin, tmax], ascending: smooth ones refined on the exact field (normal
   // -grad F / |grad F|), and sign changes across box faces (normal: the face's, pointing out
   // of the solid F >= T).
   void hits(const Ray& ray, double tmin, double tmax, std::vector<SurfaceHit>& out,
-            TraceStats& stats) const;
+            TraceStats& stats) const override;
   void roots(const Ray& ray, double tmin, double tmax, std::vector<double>& out,
-             TraceStats& stats) const;
+             TraceStats& stats) const override;
   std::optional<SurfaceHit> first_hit(const Ray& ray, double tmin, double tmax,
-                                      TraceStats& stats) const;
-  bool occluded(const Ray& ray, double tmin, double tmax, TraceStats& stats) const;
+                                      TraceStats& stats) const override;
+  bool occluded(const Ray& ray, double tmin, double tmax, TraceStats& stats) const override;
 
   // The smallest step the march takes (where F - T is within step x Lipschitz of zero): two
   // crossings closer than this along a ray may be missed.

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "accel/support_shapes.hpp"
 #include "implicit/reference_tracer.hpp"
 #include "implicit/repeated_triangles.hpp"
 #include "implicit/support_cache.hpp"
@@ -18,7 +19,7 @@ namespace {
 // the vertex blob of bench/vertex_blob_render: a loss at 2.5, a gain from 10).
 constexpr double kChunkedSupportsPerLine = 5.0;
 
-void check_weight(const Weight& w, const char* what) {
+void check_weight(const scene::Weight& w, const char* what) {
   if (!(w.radius > 0.0) || !std::isfinite(w.radius) || !std::isfinite(w.strength)) {
     throw std::invalid_argument(std::string(what) +
                                 ": radius must be positive and finite, strength finite");
@@ -27,18 +28,18 @@ void check_weight(const Weight& w, const char* what) {
 
 // Whether the component's source describes its triangles (the same count; the support index
 // checks the placement triangle by triangle and builds the group itself where it strays).
-bool has_source(const MeshComponent& m) {
+bool has_source(const scene::MeshComponent& m) {
   return m.source && m.source->local && m.source->local->size() == m.triangles.size();
 }
 
 // Mesh groups whose component has a source take their hierarchy from the cache (null: a
 // group of merged repeated triangles, which builds its own).
 void take_prebuilt(accel::SupportSources& sources,
-                   const std::vector<const MeshComponent*>& group_meshes, SupportCache& cache) {
+                   const std::vector<const scene::MeshComponent*>& group_meshes, SupportCache& cache) {
   const Box3 index_bounds = accel::support_bounds(sources);
   for (size_t g = 0; g < group_meshes.size(); ++g) {
     if (!group_meshes[g] || !has_source(*group_meshes[g])) continue;
-    const MeshComponent& mesh = *group_meshes[g];
+    const scene::MeshComponent& mesh = *group_meshes[g];
     auto& group = sources.triangle_groups[g];
     const SupportCache::Placed placed =
         cache.acquire(*mesh.source, group.triangles, group.radius, index_bounds);
@@ -49,53 +50,53 @@ void take_prebuilt(accel::SupportSources& sources,
 
 }  // namespace
 
-ConvolutionSurface::Impl::Impl(const ConvolutionObject& object, SupportCache* cache)
+ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCache* cache)
     : threshold(object.threshold) {
   if (!(threshold > 0.0) || !std::isfinite(threshold)) {
     throw std::invalid_argument("convolution object: the threshold must be positive and finite");
   }
   min_radius = std::numeric_limits<double>::infinity();
-  auto note = [&](const Weight& w, const char* what) {
+  auto note = [&](const scene::Weight& w, const char* what) {
     check_weight(w, what);
     min_radius = std::min(min_radius, w.radius);
   };
-  for (const PointComponent& c : object.points) {
+  for (const scene::PointComponent& c : object.points) {
     note(c.weight, "point");
     sphere_centers.push_back(c.center);
     sphere_radii.push_back(c.weight.radius);
     sphere_strengths.push_back(c.weight.strength);
   }
-  for (const BlobSphereComponent& c : object.blob_spheres) {
+  for (const scene::BlobSphereComponent& c : object.blob_spheres) {
     note(c.weight, "blob sphere");
     sphere_centers.push_back(c.center);
     sphere_radii.push_back(c.weight.radius);
     sphere_strengths.push_back(c.weight.strength);
   }
-  for (const SegmentComponent& c : object.segments) {
+  for (const scene::SegmentComponent& c : object.segments) {
     note(c.weight, "segment");
     capsules.push_back(c.segment);
     capsule_radii.push_back(c.weight.radius);
     capsule_strengths.push_back(c.weight.strength);
     capsule_is_blob.push_back(0);
   }
-  for (const BlobCylinderComponent& c : object.blob_cylinders) {
+  for (const scene::BlobCylinderComponent& c : object.blob_cylinders) {
     note(c.weight, "blob cylinder");
     capsules.push_back({c.base, c.apex});
     capsule_radii.push_back(c.weight.radius);
     capsule_strengths.push_back(c.weight.strength);
     capsule_is_blob.push_back(1);
   }
-  for (const ArcComponent& c : object.arcs) {
+  for (const scene::ArcComponent& c : object.arcs) {
     note(c.weight, "arc");
     arcs.push_back(c.arc);
     arc_radii.push_back(c.weight.radius);
     arc_strengths.push_back(c.weight.strength);
   }
   size_t triangle_count = 0;
-  for (const MeshComponent& m : object.meshes) triangle_count += m.triangles.size();
+  for (const scene::MeshComponent& m : object.meshes) triangle_count += m.triangles.size();
   triangles.reserve(triangle_count);
-  std::vector<const MeshComponent*> group_meshes;  // parallel to `groups`
-  for (const MeshComponent& m : object.meshes) {
+  std::vector<const scene::MeshComponent*> group_meshes;  // parallel to `groups`
+  for (const scene::MeshComponent& m : object.meshes) {
     if (m.triangles.empty()) continue;
     note(m.weight, "mesh");
     const auto mesh = uint32_t(&m - object.meshes.data());
@@ -188,8 +189,8 @@ double ConvolutionSurface::Impl::expected_supports_per_line() const {
 
 namespace {
 // This class is the quartic kernel's; `kernel cauchy` objects are CauchySurface's.
-const ConvolutionObject& require_quartic(const ConvolutionObject& object) {
-  if (object.kernel.type != KernelType::quartic) {
+const scene::ConvolutionObject& require_quartic(const scene::ConvolutionObject& object) {
+  if (object.kernel.type != field::KernelType::quartic) {
     throw std::invalid_argument("ConvolutionSurface traces the quartic kernel only; use "
                                 "CauchySurface for kernel cauchy");
   }
@@ -197,7 +198,7 @@ const ConvolutionObject& require_quartic(const ConvolutionObject& object) {
 }
 }  // namespace
 
-ConvolutionSurface::ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache,
+ConvolutionSurface::ConvolutionSurface(const scene::ConvolutionObject& object, SupportCache* cache,
                                        Tracer tracer)
     : impl_(std::make_unique<Impl>(require_quartic(object), cache)) {
   impl_->tracer = tracer;
@@ -212,6 +213,29 @@ Box3 ConvolutionSurface::bounds() const { return impl_->index->bounds(); }
 size_t ConvolutionSurface::primitive_count() const { return impl_->index->size(); }
 
 size_t ConvolutionSurface::merged_triangle_count() const { return impl_->merged_triangles; }
+
+std::vector<Box3> ConvolutionSurface::support_boxes() const {
+  const Impl& m = *impl_;
+  std::vector<Box3> boxes;
+  boxes.reserve(m.index->size());
+  for (size_t i = 0; i < m.sphere_centers.size(); ++i) {
+    const Vec3 reach(m.sphere_radii[i]);
+    boxes.push_back({m.sphere_centers[i] - reach, m.sphere_centers[i] + reach});
+  }
+  for (size_t i = 0; i < m.capsules.size(); ++i) {
+    // Blob cylinders too: a capsule of distance kernels lies within r of its axis segment.
+    boxes.push_back(accel::segment_support_box(m.capsules[i], m.capsule_radii[i]));
+  }
+  for (size_t i = 0; i < m.arcs.size(); ++i) {
+    boxes.push_back(accel::arc_support_box(m.arcs[i], m.arc_radii[i]));
+  }
+  for (const Impl::Group& g : m.groups) {
+    for (uint32_t i = g.first_triangle; i < g.end_triangle; ++i) {
+      boxes.push_back(accel::triangle_support_box(m.triangles[i], g.radius));
+    }
+  }
+  return boxes;
+}
 
 size_t ConvolutionSurface::memory_bytes() const {
   const Impl& m = *impl_;
@@ -258,6 +282,14 @@ std::optional<SurfaceHit> ConvolutionSurface::first_hit(const Ray& ray, double t
   return surface_hit_from_gradient(ray, found.front(), *gradient);
 }
 
+void ConvolutionSurface::hits(const Ray& ray, double tmin, double tmax,
+                              std::vector<SurfaceHit>& out, TraceStats& stats) const {
+  thread_local std::vector<double> found;  // not re-entered: roots() calls no surface
+  found.clear();
+  roots(ray, tmin, tmax, found, stats);
+  for (const double t : found) out.push_back(make_surface_hit(*this, ray, t));
+}
+
 bool ConvolutionSurface::occluded(const Ray& ray, double tmin, double tmax,
                                   TraceStats& stats) const {
   thread_local std::vector<double> found;
@@ -269,33 +301,6 @@ bool ConvolutionSurface::occluded(const Ray& ray, double tmin, double tmax,
   }
   find_roots(*impl_, ray, tmin, tmax, RootMode::any, found, stats);
   return !found.empty();
-}
-
-SurfaceHit make_surface_hit(const ConvolutionSurface& surface, const Ray& ray, double t) {
-  return surface_hit_from_gradient(ray, t, surface.field(ray.at(t)).gradient);
-}
-
-SurfaceHit surface_hit_from_gradient(const Ray& ray, double t, const Vec3& g) {
-  SurfaceHit hit;
-  hit.t = t;
-  hit.point = ray.at(t);
-  // Inside is F >= T, so the field falls outwards; a vanishing gradient (a touching point)
-  // falls back to facing the ray. Gradients of extreme strengths (1e200, 1e-160) overflow or
-  // underflow when squared: they are scaled by their largest component first.
-  double length = glm::length(g);
-  if (length > 1e-150 && length < 1e150) {
-    hit.normal = -g / length;
-    return hit;
-  }
-  const double largest = std::max({std::abs(g.x), std::abs(g.y), std::abs(g.z)});
-  if (!(largest > 0.0) || !std::isfinite(largest)) {
-    hit.normal = -ray.direction;
-    return hit;
-  }
-  const Vec3 scaled = g / largest;
-  length = glm::length(scaled);
-  hit.normal = -scaled / length;
-  return hit;
 }
 
 }  // namespace convray::implicit

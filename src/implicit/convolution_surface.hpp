@@ -1,5 +1,6 @@
 #pragma once
-// A convolution object made ready for queries: its field at any point (through the
+// A convolution object under the paper's quartic kernel made ready for queries (the Surface
+// interface of surface.hpp, made by make_surface): its field at any point (through the
 // acceleration structure's point query) and its surface F = T along rays, found by the
 // paper's per-interval degree-6 fits and Bézier clipping (or, where only spheres reach, the
 // exact quartic of sphere_sweep.hpp), every root polished on the exact field.
@@ -8,58 +9,52 @@
 #include <optional>
 #include <vector>
 
-#include "field/sample.hpp"
-#include "implicit/convolution_object.hpp"
-#include "implicit/ray.hpp"
-#include "implicit/trace_stats.hpp"
-#include "implicit/tracer.hpp"
+#include "implicit/surface.hpp"
 
 namespace convray::implicit {
 
-class SupportCache;
-
-class ConvolutionSurface {
+class ConvolutionSurface final : public Surface {
  public:
   // With a cache, mesh components that carry a MeshSource take the hierarchy over their
   // supports from it (built there once, then shared); the answers are the same either way.
-  explicit ConvolutionSurface(const ConvolutionObject& object, SupportCache* cache = nullptr,
+  explicit ConvolutionSurface(const scene::ConvolutionObject& object, SupportCache* cache = nullptr,
                               Tracer tracer = Tracer::fast);
-  ~ConvolutionSurface();
+  ~ConvolutionSurface() override;
   ConvolutionSurface(ConvolutionSurface&&) noexcept;
   ConvolutionSurface& operator=(ConvolutionSurface&&) noexcept;
 
-  double threshold() const;
+  double threshold() const override;
   // Union of the primitives' supports (primitive grown by its radius): F = 0 outside.
-  Box3 bounds() const;
-  size_t primitive_count() const;
+  Box3 bounds() const override;
+  size_t primitive_count() const override;
   // Mesh triangles left out as exact repeats: each distinct triangle is summed once with its
   // multiplicity (repeated_triangles.hpp).
   size_t merged_triangle_count() const;
   // Bytes held by the primitives and the acceleration structure.
-  size_t memory_bytes() const;
+  size_t memory_bytes() const override;
+  // One per distinct triangle of each mesh (exact repeats share one), segment, arc, point and
+  // blob component.
+  std::vector<Box3> support_boxes() const override;
 
   // The exact field and gradient at p (sum over the primitives whose support holds p).
-  field::FieldSample field(const Vec3& p) const;
+  field::FieldSample field(const Vec3& p) const override;
 
-  // The weighted field at p of each primitive whose support holds p, named by the component
-  // it belongs to (a mesh's triangles each under their mesh), appended to `out`: what a
-  // per-component texture needs to know which component dominates at p.
-  struct ComponentValue {
-    ComponentRef component;
-    double value = 0.0;
-  };
-  void component_values(const Vec3& p, std::vector<ComponentValue>& out) const;
+  // The weighted field at p of each primitive whose support holds p (surface.hpp).
+  void component_values(const Vec3& p, std::vector<ComponentValue>& out) const override;
 
   Tracer tracer() const;
 
   // Every t in [tmin, tmax] where F(ray.at(t)) = T, ascending, each polished on the exact field.
   void roots(const Ray& ray, double tmin, double tmax, std::vector<double>& out,
-             TraceStats& stats) const;
+             TraceStats& stats) const override;
+  // The roots with the normals of the exact gradient (make_surface_hit).
+  void hits(const Ray& ray, double tmin, double tmax, std::vector<SurfaceHit>& out,
+            TraceStats& stats) const override;
   // The first crossing in [tmin, tmax], with the normal from the exact gradient.
   std::optional<SurfaceHit> first_hit(const Ray& ray, double tmin, double tmax,
-                                      TraceStats& stats) const;
+                                      TraceStats& stats) const override;
   // Whether any crossing lies in [tmin, tmax] (shadow rays).
-  bool occluded(const Ray& ray, double tmin, double tmax, TraceStats& stats) const;
+  bool occluded(const Ray& ray, double tmin, double tmax, TraceStats& stats) const override;
 
   struct Impl;  // primitives, acceleration structure, tracer state (convolution_surface.cpp)
   const Impl& impl() const { return *impl_; }
@@ -67,10 +62,5 @@ class ConvolutionSurface {
  private:
   std::unique_ptr<Impl> impl_;
 };
-
-// The surface hit at distance t: the point and the outward unit normal -grad F / |grad F|.
-SurfaceHit make_surface_hit(const ConvolutionSurface& surface, const Ray& ray, double t);
-// The same, given the field's gradient at ray.at(t).
-SurfaceHit surface_hit_from_gradient(const Ray& ray, double t, const Vec3& gradient);
 
 }  // namespace convray::implicit

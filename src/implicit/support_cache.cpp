@@ -85,7 +85,7 @@ void SupportCache::next_frame() {
   for (Entry& e : impl_->entries) e.used = false;
 }
 
-SupportCache::Placed SupportCache::acquire(const MeshSource& source,
+SupportCache::Placed SupportCache::acquire(const scene::MeshSource& source,
                                            std::span<const field::Triangle> triangles,
                                            double radius, const Box3& index_bounds) {
   Key key{source.local.get(), radius, is_rigid(source.placement), source.placement};

@@ -13,7 +13,7 @@
 #include <memory>
 #include <span>
 
-#include "implicit/convolution_object.hpp"
+#include "scene/convolution_object.hpp"
 
 namespace convray::accel {
 class TriangleSupports;
@@ -46,7 +46,7 @@ class SupportCache {
     std::shared_ptr<const accel::TriangleSupports> supports;
     Mat4 placement{1.0};
   };
-  Placed acquire(const MeshSource& source, std::span<const field::Triangle> triangles,
+  Placed acquire(const scene::MeshSource& source, std::span<const field::Triangle> triangles,
                  double radius, const Box3& index_bounds);
 
  private:

@@ -54,7 +54,7 @@ struct ConvolutionSurface::Impl {
   Tracer tracer = Tracer::fast;
   std::unique_ptr<accel::SupportIndex> index;  // built last, over the arrays above
 
-  Impl(const ConvolutionObject& object, SupportCache* cache);
+  Impl(const scene::ConvolutionObject& object, SupportCache* cache);
   // How many supports a random line through the bounds crosses, on average.
   double expected_supports_per_line() const;
 
@@ -65,18 +65,18 @@ struct ConvolutionSurface::Impl {
   }
 
   // The component primitive `id` belongs to.
-  ComponentRef component(uint32_t id) const {
+  scene::ComponentRef component(uint32_t id) const {
     if (id < capsule_base) {
-      return id < point_count ? ComponentRef{ComponentKind::point, id}
-                              : ComponentRef{ComponentKind::blob_sphere, id - point_count};
+      return id < point_count ? scene::ComponentRef{scene::ComponentKind::point, id}
+                              : scene::ComponentRef{scene::ComponentKind::blob_sphere, id - point_count};
     }
     if (id < arc_base) {
       const uint32_t i = id - capsule_base;
-      return i < segment_count ? ComponentRef{ComponentKind::segment, i}
-                               : ComponentRef{ComponentKind::blob_cylinder, i - segment_count};
+      return i < segment_count ? scene::ComponentRef{scene::ComponentKind::segment, i}
+                               : scene::ComponentRef{scene::ComponentKind::blob_cylinder, i - segment_count};
     }
-    if (id < triangle_base) return {ComponentKind::arc, id - arc_base};
-    return {ComponentKind::mesh, group_of(id - triangle_base).mesh};
+    if (id < triangle_base) return {scene::ComponentKind::arc, id - arc_base};
+    return {scene::ComponentKind::mesh, group_of(id - triangle_base).mesh};
   }
 
   // Weighted field of primitive `id` (the support index's numbering) at p.

@@ -8,7 +8,7 @@
 #include "implicit/bezier_clip.hpp"
 #include "implicit/bracket_refine.hpp"
 #include "implicit/interval_fit.hpp"
-#include "implicit/ray_box.hpp"
+#include "core/box.hpp"
 #include "implicit/sphere_sweep.hpp"
 #include "implicit/surface_impl.hpp"
 #include "implicit/window_march.hpp"

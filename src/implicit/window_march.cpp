@@ -14,7 +14,6 @@ namespace {
 
 using Impl = ConvolutionSurface::Impl;
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // |K''| <= 8 / R^2 for K(r) = (1 - r^2/R^2)^2 along any line (see the header).
 constexpr double kKernelCurvature = 8.0;
 // A triangle's |F''| along a line is at most the integral of |u.H.u| over its part of the

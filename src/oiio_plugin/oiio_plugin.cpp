@@ -1,6 +1,6 @@
 // libconvray_oiio.so: every image format but PNG, through OpenImageIO (the interface and why
-// it is a plugin: render/oiio_plugin_api.hpp). convray's own rules (which format stores how
-// many bits, which colour space, the atomic write around it) stay in render/image_file.cpp;
+// it is a plugin: core/oiio_plugin_api.hpp). convray's own rules (which format stores how
+// many bits, which colour space, the atomic write around it) stay in core/image_file.cpp;
 // this file only turns those decisions into OpenImageIO calls.
 #include <OpenImageIO/imageio.h>
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "render/oiio_plugin_api.hpp"
+#include "core/oiio_plugin_api.hpp"
 
 #define CONVRAY_EXPORT extern "C" __attribute__((visibility("default")))
 

@@ -3,10 +3,11 @@
 // where it can be non-zero, and the threshold of the surface F = T. Any field fits: a
 // convolution object, a single mesh's MeshField, a Cauchy-kernel object, a transformed one.
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "field/sample.hpp"
-#include "implicit/convolution_object.hpp"
+#include "field/triangle.hpp"
 #include "util/math.hpp"
 
 namespace convray::polygonize {
@@ -26,12 +27,10 @@ struct FieldSource {
   double value_at(const Vec3& p) const { return value ? value(p) : field(p).value; }
 };
 
-// The closed axis-aligned box around each primitive's support (the skeleton grown by its
-// radius R) of a convolution object: one per distinct triangle of each mesh (exact repeats
-// share one), segment, arc, point and blob component.
-std::vector<Box3> support_boxes(const implicit::ConvolutionObject& object);
-
-// The box around the corners of `box` mapped by the affine `m` (conservative for any affine m).
-Box3 transform_box(const Mat4& m, const Box3& box);
+// The closed box around each triangle's support (the triangle grown by `radius`): the
+// supports of a soup's field (implicit::MeshField), whose surfaces give their own
+// (implicit::Surface::support_boxes).
+std::vector<Box3> triangle_support_boxes(std::span<const field::Triangle> triangles,
+                                         double radius);
 
 }  // namespace convray::polygonize

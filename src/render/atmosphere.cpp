@@ -40,7 +40,7 @@ Vec3 sky_color(const scene::Scene& scene, const Vec3& direction) {
   return color;
 }
 
-double ground_fog_depth(const scene::Fog& fog, const implicit::Ray& ray, double depth) {
+double ground_fog_depth(const scene::Fog& fog, const Ray& ray, double depth) {
   const double up_length = glm::length(fog.up);
   const Vec3 up = up_length > 0.0 ? fog.up / up_length : Vec3(0.0, 1.0, 0.0);
   if (!(fog.altitude > 0.0)) return depth;  // no decay above the offset: constant density
@@ -68,7 +68,7 @@ double ground_fog_depth(const scene::Fog& fog, const implicit::Ray& ray, double 
   return optical;
 }
 
-FogLayer fog_layer(const scene::Fog& fog, const implicit::Ray& ray, double depth) {
+FogLayer fog_layer(const scene::Fog& fog, const Ray& ray, double depth) {
   if (!(fog.distance > 0.0)) return FogLayer{};
   const double optical =
       fog.kind == scene::Fog::Kind::ground ? ground_fog_depth(fog, ray, depth) : depth;
@@ -78,12 +78,12 @@ FogLayer fog_layer(const scene::Fog& fog, const implicit::Ray& ray, double depth
   return FogLayer{k * tint, (1.0 - k) * c};
 }
 
-Vec3 apply_fog(const scene::Fog& fog, const implicit::Ray& ray, double depth, const Vec3& color) {
+Vec3 apply_fog(const scene::Fog& fog, const Ray& ray, double depth, const Vec3& color) {
   const FogLayer layer = fog_layer(fog, ray, depth);
   return layer.through * color + layer.glow;
 }
 
-Vec3 apply_fogs(const std::vector<scene::Fog>& fogs, const implicit::Ray& ray, double depth,
+Vec3 apply_fogs(const std::vector<scene::Fog>& fogs, const Ray& ray, double depth,
                 const Vec3& color) {
   Vec3 through(1.0), glow(0.0);
   for (const scene::Fog& fog : fogs) {

@@ -24,7 +24,7 @@
 // the picture matches POV-Ray's; tests/render/povray_compare_test.cpp).
 #include <vector>
 
-#include "implicit/ray.hpp"
+#include "core/ray.hpp"
 #include "scene/scene.hpp"
 #include "util/math.hpp"
 
@@ -39,16 +39,16 @@ struct FogLayer {
   Vec3 through{1.0};
   Vec3 glow{0.0};
 };
-FogLayer fog_layer(const scene::Fog& fog, const implicit::Ray& ray, double depth);
+FogLayer fog_layer(const scene::Fog& fog, const Ray& ray, double depth);
 
 // `color` seen through one fog over `depth`.
-Vec3 apply_fog(const scene::Fog& fog, const implicit::Ray& ray, double depth, const Vec3& color);
+Vec3 apply_fog(const scene::Fog& fog, const Ray& ray, double depth, const Vec3& color);
 
 // Through all the scene's fogs, in order.
-Vec3 apply_fogs(const std::vector<scene::Fog>& fogs, const implicit::Ray& ray, double depth,
+Vec3 apply_fogs(const std::vector<scene::Fog>& fogs, const Ray& ray, double depth,
                 const Vec3& color);
 
 // The optical depth (integral of the density) of ground fog along `ray` from 0 to `depth`.
-double ground_fog_depth(const scene::Fog& fog, const implicit::Ray& ray, double depth);
+double ground_fog_depth(const scene::Fog& fog, const Ray& ray, double depth);
 
 }  // namespace convray::render

@@ -19,11 +19,8 @@ namespace convray::render {
 
 using geometry::Crossing;
 using geometry::SurfaceInfo;
-using implicit::Ray;
 
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double max_channel(const Vec3& v) { return std::max({v.r, v.g, v.b}); }
 

@@ -41,7 +41,7 @@ class Integrator {
              const IntegratorSettings& settings);
 
   // The colour seen along a camera ray (unit direction).
-  Vec3 trace_camera_ray(const implicit::Ray& ray, RenderStats& stats) const;
+  Vec3 trace_camera_ray(const Ray& ray, RenderStats& stats) const;
 
  private:
   struct RayState {
@@ -52,9 +52,9 @@ class Integrator {
   // What shading needs to know about the hit point.
   struct HitPoint;
 
-  Vec3 trace(const implicit::Ray& ray, const RayState& state, double tmin,
+  Vec3 trace(const Ray& ray, const RayState& state, double tmin,
              RenderStats& stats) const;
-  Vec3 shade(const implicit::Ray& ray, const geometry::Crossing& crossing, const RayState& state,
+  Vec3 shade(const Ray& ray, const geometry::Crossing& crossing, const RayState& state,
              RenderStats& stats) const;
   // A texture at the hit: the plain textures its texture patterns pick there (texture_map.hpp),
   // each shaded as a layer, added by weight.

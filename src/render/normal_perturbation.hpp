@@ -6,9 +6,10 @@
 // g pointing along the world-space gradient but as long as the gradient in pattern space, so
 // that scaling a normal pattern changes the size of its bumps, not their steepness, and
 // k = 2/15 as measured on POV-Ray 3.7 for patterns used as normals (gradient, onion,
-// marble, ...: exact for linear stretches). For POV-Ray's own normal patterns (bumps, dents,
-// wrinkles, ripples, waves) k = 1/2 gives about POV-Ray's steepness with our noise; their
-// pictures are alike, not equal. Where a wrapped pattern jumps from 1 to 0 we take the slope
+// marble, ...: exact for linear stretches). bumps, dents and wrinkles are POV-Ray's own:
+// normalize(n + amount W(p)), W made of its vector noise, as the binary draws them. For
+// ripples and waves k = 1/2 gives about POV-Ray's steepness; their pictures are alike, not
+// equal. Where a wrapped pattern jumps from 1 to 0 we take the slope
 // across the jump (POV-Ray draws a thin crease there).
 #include "scene/texture.hpp"
 #include "util/math.hpp"

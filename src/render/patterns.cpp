@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "render/noise.hpp"
+#include "render/noise_patterns.hpp"
 #include "render/sample_hash.hpp"
 
 namespace convray::render {
@@ -63,16 +64,6 @@ double waves(const Vec3& q, double frequency, double phase) {
   return std::clamp(0.5 + 0.5 * sum / std::sqrt(double(kWaveSources)), 0.0, 1.0);
 }
 
-// Fractal sums of |noise|, clamped to [0, 1].
-double fractal_abs_noise(const Vec3& q, int octaves) {
-  return std::clamp(turbulence_scalar(q, octaves, 0.5, 2.0), 0.0, 1.0);
-}
-
-double agate(const Vec3& q) {
-  const double warp = 0.75 * turbulence_scalar(q, 7, 0.5, 2.0);
-  return std::pow(0.5 * (1.0 + std::sin(2.0 * kPi * (q.z + warp))), 0.77);
-}
-
 // 1 at the centre falling linearly to 0 at distance 1, 0 beyond: planar, spherical,
 // cylindrical and boxed, each with its own distance.
 double falling_from_one(double distance) { return std::max(0.0, 1.0 - distance); }
@@ -127,19 +118,17 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
     case Pattern::gradient:
       return fract(gradient(q, space.gradient_axis));
     case Pattern::marble:
-      return q.x;
+      return marble_value(space, q);
     case Pattern::wood:
-      return std::sqrt(q.x * q.x + q.y * q.y);
+      return wood_value(space, q);
     case Pattern::granite:
-      return fractal_abs_noise(4.0 * q, 6);
     case Pattern::agate:
-      return agate(q);
     case Pattern::bozo:
     case Pattern::spotted:
     case Pattern::bumps:
-      return noise(q);
     case Pattern::dents:
-      return std::pow(noise(q), 3.0);
+    case Pattern::wrinkles:
+      return noise_pattern_value(space, q);
     case Pattern::radial:
       return fract(std::atan2(-q.z, q.x) / (2.0 * kPi));
     case Pattern::onion:
@@ -152,8 +141,6 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
       return ripples(q, space.frequency, space.phase);
     case Pattern::waves:
       return waves(q, space.frequency, space.phase);
-    case Pattern::wrinkles:
-      return fractal_abs_noise(q, 10);
     case Pattern::planar:
       return falling_from_one(std::abs(q.y));
     case Pattern::spherical:
@@ -178,7 +165,7 @@ double pattern_value(const scene::PatternSpace& space, const Vec3& world_point) 
 
 double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& pattern_point) {
   Vec3 q = pattern_point;
-  if (space.turbulence.active()) {
+  if (space.turbulence.active() && !has_own_turbulence(space.pattern)) {
     const scene::Turbulence& turbulence = space.turbulence;
     q += turbulence.amount *
          turbulence_vector(q, turbulence.octaves, turbulence.omega, turbulence.lambda);

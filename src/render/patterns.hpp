@@ -16,11 +16,12 @@
 //   boxed     max(0, 1 - max(|x|, |y|, |z|))
 //   spiral1 N r + N (atan2(y, x) / 2 pi + 1/4) + z, r = |(x, y)|; triangle wave by default
 //   mandel N  escape time of z -> z^2 + (x + iy) from z = x + iy, over N; 1 inside the set
-//   dents     noise^3, bumps/spotted/bozo: noise
+//   bozo, spotted, bumps, dents, granite, wrinkles, agate, marble and wood: POV-Ray's
+//             noise and formulas, matched to the binary (render/noise_patterns.hpp)
 // frequency and phase: v -> wave(v * frequency + phase) with wave = fract (triangle wave for
 // marble, wood and spiral1): gradient x frequency 2 phase 0.3 gives 0.4 at x = 0.05.
-// Noise-based patterns (bozo, spotted, granite, agate, bumps, dents, wrinkles, ripples,
-// waves) use our own noise and formulas: alike in character, not pixel for pixel.
+// Not matched yet: ripples and waves (our own wave sources) and the bumps of normal patterns
+// (render/normal_perturbation.hpp): alike in character, not pixel for pixel.
 #include "scene/texture.hpp"
 #include "util/math.hpp"
 

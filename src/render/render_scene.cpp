@@ -11,7 +11,7 @@
 
 #include "render/antialias.hpp"
 #include "render/integrator.hpp"
-#include "render/progress.hpp"
+#include "core/progress.hpp"
 #include "render/scene_camera.hpp"
 
 namespace convray::render {

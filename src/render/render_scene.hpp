@@ -14,9 +14,11 @@
 #include "render/render_result.hpp"
 #include "scene/scene.hpp"
 
-namespace convray::render {
+namespace convray {
+class Progress;  // core/progress.hpp
+}  // namespace convray
 
-class Progress;
+namespace convray::render {
 
 struct RenderSettings {
   int width = 800, height = 600;

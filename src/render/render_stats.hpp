@@ -1,10 +1,10 @@
 #pragma once
 // What a render did, counted per thread and summed: the rays the renderer cast, and the work
-// the surface did for them (implicit::TraceStats). Integers only, so the sums, like the
+// the surface did for them (TraceStats). Integers only, so the sums, like the
 // pixels, do not depend on how the work was split between threads.
 #include <cstdint>
 
-#include "implicit/trace_stats.hpp"
+#include "core/trace_stats.hpp"
 
 namespace convray::render {
 
@@ -16,7 +16,7 @@ struct RenderStats {
   uint64_t reflected_rays = 0;       // render_scene: secondary rays off mirrors (and total
   uint64_t refracted_rays = 0;       //   internal reflection), and through transparent surfaces
   uint64_t supersampled_pixels = 0;  // render_scene: pixels anti-aliasing sampled again
-  implicit::TraceStats trace;
+  TraceStats trace;
 
   RenderStats& operator+=(const RenderStats& o) {
     camera_rays += o.camera_rays;

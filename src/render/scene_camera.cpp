@@ -20,20 +20,20 @@ SceneCamera::SceneCamera(const scene::Camera& camera, int width, int height)
   }
 }
 
-implicit::Ray SceneCamera::ray_through(double x0, double y0) const {
+Ray SceneCamera::ray_through(double x0, double y0) const {
   using Kind = scene::Camera::Kind;
   if (camera_.kind != Kind::perspective && camera_.kind != Kind::orthographic) {
-    const std::optional<implicit::Ray> ray = wide_projection_ray(camera_, x0, y0);
-    return ray ? *ray : implicit::Ray{camera_.location, Vec3(0.0)};
+    const std::optional<Ray> ray = wide_projection_ray(camera_, x0, y0);
+    return ray ? *ray : Ray{camera_.location, Vec3(0.0)};
   }
   const Vec3 offset = x0 * camera_.right + y0 * camera_.up;
   if (camera_.kind == scene::Camera::Kind::orthographic) {
-    return implicit::Ray{camera_.location + offset, glm::normalize(camera_.direction)};
+    return Ray{camera_.location + offset, glm::normalize(camera_.direction)};
   }
-  return implicit::Ray{camera_.location, glm::normalize(camera_.direction + offset)};
+  return Ray{camera_.location, glm::normalize(camera_.direction + offset)};
 }
 
-implicit::Ray SceneCamera::ray_at_film(double x, double y) const {
+Ray SceneCamera::ray_at_film(double x, double y) const {
   return ray_through(x / width_ - 0.5, 0.5 - y / height_);
 }
 

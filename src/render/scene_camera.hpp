@@ -8,7 +8,7 @@
 //   orthographic: from location + x0 right + y0 up along normalize(direction)
 //   fisheye, panoramic, spherical, cylinder: wide_projections.hpp; where a projection has no
 //   ray (outside a fisheye's circle) the ray's direction is zero, and the pixel is black.
-#include "implicit/ray.hpp"
+#include "core/ray.hpp"
 #include "scene/scene.hpp"
 
 namespace convray::render {
@@ -23,11 +23,11 @@ class SceneCamera {
   int height() const { return height_; }
 
   // The ray through image-plane coordinates (x0, y0) in [-0.5, 0.5]^2.
-  implicit::Ray ray_through(double x0, double y0) const;
+  Ray ray_through(double x0, double y0) const;
   // The ray through film point (x, y): pixel (i, j) covers [i, i + 1] x [j, j + 1].
-  implicit::Ray ray_at_film(double x, double y) const;
+  Ray ray_at_film(double x, double y) const;
   // The ray through pixel (i, j)'s centre.
-  implicit::Ray primary_ray(int i, int j) const { return ray_at_film(i + 0.5, j + 0.5); }
+  Ray primary_ray(int i, int j) const { return ray_at_film(i + 0.5, j + 0.5); }
 
  private:
   scene::Camera camera_;

@@ -38,7 +38,7 @@ Vec3 surface_transmittance(const geometry::SurfaceInfo& surface, const Vec3& poi
   return texture_transmittance(*surface.texture, point);
 }
 
-Vec3 shadow_transmittance(const geometry::World& world, const geometry::Ray& ray, double tmin,
+Vec3 shadow_transmittance(const geometry::World& world, const Ray& ray, double tmin,
                           double tmax, double step, RenderStats& stats) {
   ++stats.shadow_rays;
   Vec3 passed(1.0);

@@ -16,7 +16,7 @@ namespace convray::render {
 // Asks the world for one crossing at a time, so that a shadow ray stops at the first opaque
 // surface without finding the ones behind it; `step` (> 0) is how far past a transparent
 // crossing the search resumes.
-Vec3 shadow_transmittance(const geometry::World& world, const geometry::Ray& ray, double tmin,
+Vec3 shadow_transmittance(const geometry::World& world, const Ray& ray, double tmin,
                           double tmax, double step, RenderStats& stats);
 
 // What one crossed surface lets through: f * pigment + t of its pigment at `point`.

@@ -17,7 +17,7 @@ Frame frame_of(const scene::Camera& camera) {
           glm::normalize(camera.direction), glm::length(camera.right), glm::length(camera.up)};
 }
 
-std::optional<implicit::Ray> fisheye(const scene::Camera& camera, double u, double v) {
+std::optional<Ray> fisheye(const scene::Camera& camera, double u, double v) {
   const Frame f = frame_of(camera);
   const double a = u * f.right_length, b = v * f.up_length;
   const double r = std::hypot(a, b);
@@ -25,17 +25,17 @@ std::optional<implicit::Ray> fisheye(const scene::Camera& camera, double u, doub
   const double theta = r * camera.angle * kDegree;
   Vec3 sideways(0.0);
   if (r > 0.0) sideways = (a * f.r + b * f.u) / r;
-  return implicit::Ray{camera.location,
+  return Ray{camera.location,
                        glm::normalize(std::sin(theta) * sideways + std::cos(theta) * f.d)};
 }
 
-implicit::Ray panoramic(const scene::Camera& camera, double u, double v) {
+Ray panoramic(const scene::Camera& camera, double u, double v) {
   const Vec3 direction = std::sin(kPi * u) * camera.right + std::tan(kPi * v) * camera.up +
                          std::cos(kPi * u) * camera.direction;
   return {camera.location, glm::normalize(direction)};
 }
 
-implicit::Ray spherical(const scene::Camera& camera, double u, double v) {
+Ray spherical(const scene::Camera& camera, double u, double v) {
   const Frame f = frame_of(camera);
   const double longitude = u * camera.angle * kDegree;
   const double latitude = v * camera.vertical_angle * kDegree;
@@ -45,7 +45,7 @@ implicit::Ray spherical(const scene::Camera& camera, double u, double v) {
   return {camera.location, glm::normalize(direction)};
 }
 
-implicit::Ray cylinder(const scene::Camera& camera, double u, double v) {
+Ray cylinder(const scene::Camera& camera, double u, double v) {
   const Frame f = frame_of(camera);
   const double along_right = u * f.right_length, along_up = v * f.up_length;
   const double around_vertical = u * camera.angle * kDegree;
@@ -64,7 +64,7 @@ implicit::Ray cylinder(const scene::Camera& camera, double u, double v) {
   }
 }
 
-implicit::Ray ultra_wide_angle(const scene::Camera& camera, double u, double v) {
+Ray ultra_wide_angle(const scene::Camera& camera, double u, double v) {
   const Frame f = frame_of(camera);
   const double a = u * camera.angle * kDegree;
   const double b = v * camera.angle * (f.up_length / f.right_length) * kDegree;
@@ -75,7 +75,7 @@ implicit::Ray ultra_wide_angle(const scene::Camera& camera, double u, double v) 
 
 }  // namespace
 
-std::optional<implicit::Ray> wide_projection_ray(const scene::Camera& camera, double u,
+std::optional<Ray> wide_projection_ray(const scene::Camera& camera, double u,
                                                  double v) {
   switch (camera.kind) {
     case scene::Camera::Kind::fisheye:

@@ -16,13 +16,13 @@
 //              sin(a) R^ + sin(b) U^ + cos(a) cos(b) D^
 #include <optional>
 
-#include "implicit/ray.hpp"
+#include "core/ray.hpp"
 #include "scene/scene.hpp"
 
 namespace convray::render {
 
 // The ray of a wide projection through (u, v); nullopt where the projection has none (the
 // corners outside a fisheye's circle, which POV-Ray leaves black).
-std::optional<implicit::Ray> wide_projection_ray(const scene::Camera& camera, double u, double v);
+std::optional<Ray> wide_projection_ray(const scene::Camera& camera, double u, double v);
 
 }  // namespace convray::render

@@ -10,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "implicit/convolution_object.hpp"
+#include "scene/convolution_object.hpp"
 #include "scene/function.hpp"
 #include "scene/texture.hpp"
 #include "scene/transform.hpp"
@@ -85,14 +85,14 @@ struct ComponentTexture {
   TexturePtr texture;
 };
 
-// POV-Ray's `blob` and our `convolution`: both become the field of implicit::ConvolutionObject
+// POV-Ray's `blob` and our `convolution`: both become the field of scene::ConvolutionObject
 // (blob: blob_spheres / blob_cylinders; convolution: meshes, segments, arcs, points), with the
 // components already in the object's own space (component transforms applied).
 struct Implicit {
-  implicit::ConvolutionObject object;
+  scene::ConvolutionObject object;
   // For per-component textures: the order in which components were listed, as (kind, index in
   // that kind's vector of `object`).
-  using Kind = implicit::ComponentKind;
+  using Kind = scene::ComponentKind;
   std::vector<std::pair<Kind, size_t>> component_order;
   std::vector<ComponentTexture> component_textures;
   bool is_blob = false;  // written as `blob`: POV-Ray's inside rule F > T - 1e-6 applies

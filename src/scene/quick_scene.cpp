@@ -55,7 +55,7 @@ TexturePtr quick_texture() {
   return std::make_shared<const Texture>(texture);
 }
 
-Scene quick_scene(implicit::ConvolutionObject object, const Camera& camera,
+Scene quick_scene(scene::ConvolutionObject object, const Camera& camera,
                          const Vec3& light) {
   Scene scene;
   scene.camera = camera;

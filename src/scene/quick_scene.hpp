@@ -3,7 +3,7 @@
 // light with shadows, a dark background, and a perspective camera that either frames the
 // object's bounds or looks where the options say. Quick pictures go through the same
 // renderer as scene files (render/render_scene.hpp); this file only chooses the records.
-#include "implicit/convolution_object.hpp"
+#include "scene/convolution_object.hpp"
 #include "scene/look_at_camera.hpp"
 #include "scene/scene.hpp"
 #include "util/math.hpp"
@@ -24,7 +24,7 @@ TexturePtr quick_texture();
 
 // The whole scene: `object` (in world space) seen by `camera`, lit by a white point light at
 // `light`, shadows on, assumed_gamma 1.
-Scene quick_scene(implicit::ConvolutionObject object, const Camera& camera,
+Scene quick_scene(scene::ConvolutionObject object, const Camera& camera,
                          const Vec3& light);
 
 }  // namespace convray::scene

@@ -70,6 +70,8 @@ struct PatternSpace {
   Vec3 gradient_axis{1.0, 0.0, 0.0};  // gradient only
   double arms = 1.0;                  // spiral1 only: its number of arms
   int iterations = 0;                 // mandel only: the most iterations
+  double agate_turb = 1.0;            // agate only: the weight of its turbulence
+  int noise_generator = 2;            // POV-Ray's noise generator: 1 original, 2 range-corrected
   std::shared_ptr<const Function> function;  // function only
   Turbulence turbulence;
   double frequency = 1.0;  // value -> fract(value * frequency + phase)

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <glm/geometric.hpp>
 
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "sdl/component_modifiers.hpp"
 #include "sdl/diagnostics.hpp"
 #include "sdl/item_helpers.hpp"
@@ -71,7 +71,7 @@ void parse_mesh_component(Parser& parser, Block& block, PendingComponent& compon
   if (!skeleton->triangles.empty()) {
     // The skeleton owns the triangles: share them with it (shared_ptr's aliasing constructor).
     const std::shared_ptr<const std::vector<field::Triangle>> local(skeleton, &skeleton->triangles);
-    component.source = implicit::MeshSource{local, transform.forward()};
+    component.source = scene::MeshSource{local, transform.forward()};
   }
   component.triangles.reserve(skeleton->triangles.size());
   for (const field::Triangle& triangle : skeleton->triangles) {
@@ -166,14 +166,14 @@ PendingComponent parse_convolution_component(Parser& parser) {
 
 namespace {
 
-bool same_weight(const implicit::Weight& a, const implicit::Weight& b) {
+bool same_weight(const scene::Weight& a, const scene::Weight& b) {
   return a.strength == b.strength && a.radius == b.radius;
 }
 
 // A mesh file's segments and points, each a component of the mesh's weight and texture.
-void add_file_segments_and_points(const PendingComponent& component, const implicit::Weight& weight,
+void add_file_segments_and_points(const PendingComponent& component, const scene::Weight& weight,
                                   scene::Implicit& implicit) {
-  implicit::ConvolutionObject& object = implicit.object;
+  scene::ConvolutionObject& object = implicit.object;
   for (const field::Segment& segment : component.segments) {
     add_component_texture(implicit, component.texture);
     implicit.component_order.emplace_back(Kind::segment, object.segments.size());
@@ -187,13 +187,13 @@ void add_file_segments_and_points(const PendingComponent& component, const impli
 }
 
 // Appends `component` to the vectors of `implicit` and notes its place in listing order.
-void add_component(PendingComponent& component, const implicit::Weight& weight,
+void add_component(PendingComponent& component, const scene::Weight& weight,
                    scene::Implicit& implicit) {
   if (component.kind == Kind::mesh && (!component.segments.empty() || !component.points.empty())) {
     add_file_segments_and_points(component, weight, implicit);
     if (component.triangles.empty()) return;  // a point cloud or a line set
   }
-  implicit::ConvolutionObject& object = implicit.object;
+  scene::ConvolutionObject& object = implicit.object;
   size_t index = 0;
   switch (component.kind) {
     case Kind::mesh:
@@ -218,12 +218,12 @@ void add_component(PendingComponent& component, const implicit::Weight& weight,
   implicit.component_order.emplace_back(component.kind, index);
 }
 
-// What double precision carries (implicit::check_radius_in_range; strengths within 1e+-290,
+// What double precision carries (field::check_radius_in_range; strengths within 1e+-290,
 // as the threshold): beyond it the field overflows or sinks into subnormals and the picture
 // is silently wrong.
-void check_weight_in_range(const SourceLoc& loc, const implicit::Weight& weight) {
+void check_weight_in_range(const SourceLoc& loc, const scene::Weight& weight) {
   try {
-    implicit::check_radius_in_range(weight.radius);
+    field::check_radius_in_range(weight.radius);
   } catch (const std::invalid_argument& e) {
     throw InputError(loc, std::string("convolution component: ") + e.what());
   }
@@ -240,7 +240,7 @@ void resolve_components(std::vector<PendingComponent>& components,
                         const ConvolutionDefaults& defaults, scene::Implicit& implicit) {
   bool last_is_triangle_group = false;
   for (PendingComponent& component : components) {
-    const implicit::Weight weight{
+    const scene::Weight weight{
         component.strength.value_or(defaults.strength),
         component.radius.value_or(defaults.radius) * component.radius_scale};
     check_weight_in_range(component.loc, weight);

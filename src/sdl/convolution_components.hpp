@@ -20,7 +20,7 @@ struct PendingComponent {
   double radius_scale = 1.0;     // from the component's uniform scale
   bool single_triangle = false;  // `triangle { }`: grouped with its neighbours of equal weight
   std::vector<field::Triangle> triangles;  // mesh, triangle
-  std::optional<implicit::MeshSource> source;  // mesh: the file's triangles and placement
+  std::optional<scene::MeshSource> source;  // mesh: the file's triangles and placement
   std::vector<field::Segment> segments;    // mesh: the file's polylines and edges, placed
   std::vector<Vec3> points;                // mesh: the file's points, placed
   field::Segment segment;

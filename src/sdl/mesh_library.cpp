@@ -7,7 +7,7 @@
 namespace convray::sdl {
 
 SharedSkeleton MeshLibrary::read(const std::string& path) {
-  return std::make_shared<const implicit::MeshSkeleton>(implicit::skeleton_of(mesh::load_mesh(path)));
+  return std::make_shared<const scene::MeshSkeleton>(scene::skeleton_of(mesh::load_mesh(path)));
 }
 
 SharedSkeleton MeshLibrary::load(const std::string& path) {

@@ -2,7 +2,7 @@
 // Mesh files read once per animation: the parser asks the library for a convolution mesh's
 // skeleton (triangles, segments, points); the same file (resolved path, size and modification
 // time alike) gives the same shared skeleton, whose triangles later stages recognise
-// (implicit::MeshSource, SupportCache). A file that changed on disk is read again. Thread-safe.
+// (scene::MeshSource, SupportCache). A file that changed on disk is read again. Thread-safe.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "implicit/mesh_skeleton.hpp"
+#include "scene/mesh_skeleton.hpp"
 
 namespace convray::sdl {
 
-using SharedSkeleton = std::shared_ptr<const implicit::MeshSkeleton>;
+using SharedSkeleton = std::shared_ptr<const scene::MeshSkeleton>;
 
 class MeshLibrary {
  public:

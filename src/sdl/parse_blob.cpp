@@ -32,7 +32,7 @@ void parse_component_modifiers(Block& block, ComponentModifiers& modifiers) {
 void parse_blob_sphere(Parser& parser, scene::Implicit& implicit) {
   const SourceLoc loc = take_keyword(parser);
   Block block(parser, "blob sphere", loc);
-  implicit::BlobSphereComponent sphere;
+  scene::BlobSphereComponent sphere;
   sphere.center = vector_param(parser, "center");
   parser.accept_comma();
   sphere.weight.radius = float_param(parser, "radius");
@@ -50,7 +50,7 @@ void parse_blob_sphere(Parser& parser, scene::Implicit& implicit) {
 void parse_blob_cylinder(Parser& parser, scene::Implicit& implicit) {
   const SourceLoc loc = take_keyword(parser);
   Block block(parser, "blob cylinder", loc);
-  implicit::BlobCylinderComponent cylinder;
+  scene::BlobCylinderComponent cylinder;
   cylinder.base = vector_param(parser, "base point");
   parser.accept_comma();
   cylinder.apex = vector_param(parser, "cap point");
@@ -74,7 +74,7 @@ void parse_blob_cylinder(Parser& parser, scene::Implicit& implicit) {
 // The old form: `component strength, radius, <center>`.
 void parse_old_component(Parser& parser, scene::Implicit& implicit) {
   const SourceLoc loc = take_keyword(parser);
-  implicit::BlobSphereComponent sphere;
+  scene::BlobSphereComponent sphere;
   sphere.weight.strength = float_param(parser, "strength");
   parser.accept_comma();
   sphere.weight.radius = float_param(parser, "radius");

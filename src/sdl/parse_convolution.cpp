@@ -17,8 +17,7 @@
 //   }
 #include <cmath>
 
-#include "field/cauchy.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "sdl/convolution_components.hpp"
 #include "sdl/item_parsers.hpp"
 #include "sdl/object_builder.hpp"
@@ -33,15 +32,15 @@ struct ConvolutionSettings {
   std::optional<SourceLoc> strength_loc;
   std::optional<double> offset, threshold;
   SourceLoc offset_loc, threshold_loc;
-  implicit::Kernel kernel;
+  field::Kernel kernel;
 };
 
 // After `kernel`: `quartic`, or `cauchy` with an optional sharpness s > 0.
-void parse_kernel(Parser& parser, implicit::Kernel& kernel) {
+void parse_kernel(Parser& parser, field::Kernel& kernel) {
   if (accept_word(parser, "quartic")) {
     kernel = {};
   } else if (accept_word(parser, "cauchy")) {
-    kernel.type = implicit::KernelType::cauchy;
+    kernel.type = field::KernelType::cauchy;
     kernel.sharpness = 1.0;
     if (at_float_start(parser)) {
       const SourceLoc loc = parser.peek().loc;
@@ -108,7 +107,7 @@ double resolve_threshold(Parser& parser, const SourceLoc& loc,
     return *settings.threshold;
   }
   try {
-    implicit::check_radius_in_range(d.radius);
+    field::check_radius_in_range(d.radius);
   } catch (const std::invalid_argument& e) {
     parser.fail(loc, std::string("convolution: ") + e.what());
   }
@@ -120,10 +119,7 @@ double resolve_threshold(Parser& parser, const SourceLoc& loc,
                     number_text(offset) + ", radius " + number_text(d.radius) + ")");
   }
   // The plane's field at distance `offset`, under the object's kernel.
-  const double threshold =
-      settings.kernel.type == implicit::KernelType::cauchy
-          ? d.strength * field::cauchy_plane_value(offset, settings.kernel.sharpness)
-          : implicit::threshold_for_offset(d.strength, d.radius, offset);
+  const double threshold = field::plane_threshold(settings.kernel, d.strength, d.radius, offset);
   if (!(threshold > 0.0)) {
     parser.fail(settings.strength_loc.value_or(loc),
                 "convolution: a threshold from the offset needs a positive strength (found " +
@@ -159,7 +155,7 @@ scene::ObjectPtr parse_convolution(Parser& parser) {
   if (components.empty()) {
     parser.fail(loc, "convolution has no components (mesh, triangle, segment, arc, point)");
   }
-  if (settings.kernel.type == implicit::KernelType::cauchy) {
+  if (settings.kernel.type == field::KernelType::cauchy) {
     for (const PendingComponent& component : components) {
       if (component.kind == scene::Implicit::Kind::arc) {
         parser.fail(component.loc,

@@ -112,6 +112,20 @@ void parse_turbulence_setting(Parser& parser, const std::string& word,
   }
 }
 
+// Generators 1 and 2 are POV-Ray's own noise (render/noise.hpp); 3, Perlin's improved noise,
+// is not matched yet and is drawn with 2, which the warning says.
+void parse_noise_generator(Parser& parser, const SourceLoc& loc, scene::PatternSpace& space) {
+  const int generator = int_param(parser, "noise_generator");
+  if (generator < 1 || generator > 3) {
+    parser.fail(loc, "noise_generator must be 1, 2 or 3, found " + std::to_string(generator));
+  }
+  space.noise_generator = generator == 1 ? 1 : 2;
+  if (generator == 3) {
+    warn_once(parser, loc,
+              "noise_generator 3 (Perlin's improved noise) is drawn with generator 2 by convray");
+  }
+}
+
 }  // namespace
 
 bool parse_pattern_modifier(Parser& parser, scene::PatternSpace& space) {
@@ -143,12 +157,10 @@ bool parse_pattern_modifier(Parser& parser, scene::PatternSpace& space) {
     space.wave_exponent = at_float_start(parser) ? float_param(parser, "poly_wave") : 1.0;
   } else if (word == "quick_color" || word == "quick_colour") {
     color_param(parser);  // a preview colour: irrelevant to a full render
+  } else if (word == "agate_turb") {
+    space.agate_turb = float_param(parser, "agate_turb");
   } else {
-    // The noise generator and agate_turb: parsed, and the difference they make is not
-    // rendered.
-    if (word == "noise_generator") int_param(parser, "noise_generator");
-    if (word == "agate_turb") float_param(parser, "agate_turb");
-    warn_once(parser, loc, "'" + word + "' is ignored by convray");
+    parse_noise_generator(parser, loc, space);
   }
   return true;
 }

@@ -13,6 +13,7 @@ using Vec3 = glm::dvec3;
 using Mat4 = glm::dmat4;
 
 inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 struct Box3 {
   Vec3 lo{std::numeric_limits<double>::infinity()};

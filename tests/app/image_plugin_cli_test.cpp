@@ -1,4 +1,4 @@
-// The image formats' plugin (libconvray_oiio.so, render/oiio_plugin_api.hpp) through the
+// The image formats' plugin (libconvray_oiio.so, core/oiio_plugin_api.hpp) through the
 // program: convray itself does not load OpenImageIO, a PNG render needs no plugin, and a
 // format that does need it, when the plugin is missing, is an error naming the plugin's file
 // that leaves no picture behind.

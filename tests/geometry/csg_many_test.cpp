@@ -4,7 +4,7 @@
 // both the rules and the hierarchies that make CsgShape cost log n per ray.
 #include <gtest/gtest.h>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry {

@@ -4,7 +4,7 @@
 // classification cannot see: it is checked against the children's crossings instead.
 #include <gtest/gtest.h>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry {

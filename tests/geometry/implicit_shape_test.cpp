@@ -13,6 +13,7 @@
 #include "field/point.hpp"
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
+#include "implicit/convolution_surface.hpp"
 
 #include "geometry_test_support.hpp"
 
@@ -70,7 +71,7 @@ TEST(Implicit, OneBlobSphereIsTheAnalyticSphere) {
 
 TEST(Implicit, PlacedObjectAgreesWithConvolutionSurfaceInItsOwnSpace) {
   scene::Implicit record;
-  implicit::ConvolutionObject& o = record.object;
+  scene::ConvolutionObject& o = record.object;
   o.points.push_back({{0, 0, 0}, {1.0, 1.0}});
   o.segments.push_back({{{0.5, 0, 0}, {1.5, 0.5, 0}}, {1.0, 0.7}});
   o.points.push_back({{0.6, 0.4, 0}, {-0.5, 0.5}});  // negative strengths subtract
@@ -155,8 +156,8 @@ TEST(Implicit, DominantComponentGivesTheTexture) {
 TEST(Implicit, DominantComponentMatchesBruteForceSums) {
   using Kind = scene::Implicit::Kind;
   scene::Implicit record;
-  implicit::ConvolutionObject& o = record.object;
-  implicit::MeshComponent sheet;  // a wavy 12 x 12 grid of triangles around z = 0
+  scene::ConvolutionObject& o = record.object;
+  scene::MeshComponent sheet;  // a wavy 12 x 12 grid of triangles around z = 0
   for (int i = 0; i < 12; ++i) {
     for (int j = 0; j < 12; ++j) {
       auto at = [](int u, int v) {

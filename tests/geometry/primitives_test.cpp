@@ -2,7 +2,7 @@
 // are known by heart) and against brute-force classification along random rays.
 #include <gtest/gtest.h>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry {
@@ -250,10 +250,10 @@ TEST(Disc, HitsTheAnnulusOnlyAndItsInsideIsBehindTheNormal) {
 
 TEST(Bounds, TransformedInfiniteBoxesStayInfiniteWithoutNaN) {
   const Box3 half{Vec3(-INFINITY, -INFINITY, -INFINITY), Vec3(INFINITY, 2.0, INFINITY)};
-  const Box3 moved = transform_box(scene::Transform::translation({1, 1, 1}), half);
+  const Box3 moved = transform_box(scene::Transform::translation({1, 1, 1}).forward(), half);
   EXPECT_EQ(moved.hi.y, 3.0);
   EXPECT_EQ(moved.lo.x, -INFINITY);
-  const Box3 turned = transform_box(scene::Transform::rotation({0, 0, 90}), half);
+  const Box3 turned = transform_box(scene::Transform::rotation({0, 0, 90}).forward(), half);
   for (int axis = 0; axis < 3; ++axis) {
     EXPECT_FALSE(std::isnan(turned.lo[axis]) || std::isnan(turned.hi[axis]));
   }

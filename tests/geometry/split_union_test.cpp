@@ -4,7 +4,7 @@
 // distances, the same inherited textures, interiors and no_shadow.
 #include <gtest/gtest.h>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry {

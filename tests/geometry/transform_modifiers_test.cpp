@@ -2,7 +2,7 @@
 // the modifiers inverse, clipped_by and bounded_by against their definitions.
 #include <gtest/gtest.h>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry {

@@ -22,13 +22,13 @@ scene::Scene mesh_scene() {
   }
   Mat4 placement = glm::rotate(Mat4(1.0), 0.7, glm::normalize(Vec3(1, 0.5, 0)));
   placement[3] = glm::dvec4(0.3, -0.2, 0.1, 1.0);
-  implicit::MeshComponent mesh;
+  scene::MeshComponent mesh;
   for (const field::Triangle& t : *file) {
     mesh.triangles.push_back({transform_point(placement, t.a), transform_point(placement, t.b),
                               transform_point(placement, t.c)});
   }
   mesh.weight = {1.0, 0.3};
-  mesh.source = implicit::MeshSource{file, placement};
+  mesh.source = scene::MeshSource{file, placement};
   scene::Implicit record;
   record.object.meshes.push_back(std::move(mesh));
   record.object.segments.push_back({{{0.8, 0, 0}, {2.0, 0.5, 0.2}}, {0.6, 0.4}});

@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry {

@@ -19,8 +19,8 @@ Vec3 random_unit(std::mt19937_64& rng) {
   return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
 }
 
-ConvolutionObject blob(std::initializer_list<BlobSphereComponent> spheres, double threshold) {
-  ConvolutionObject o;
+scene::ConvolutionObject blob(std::initializer_list<scene::BlobSphereComponent> spheres, double threshold) {
+  scene::ConvolutionObject o;
   o.blob_spheres = spheres;
   o.threshold = threshold;
   return o;
@@ -28,7 +28,7 @@ ConvolutionObject blob(std::initializer_list<BlobSphereComponent> spheres, doubl
 
 // The field along the ray written out by hand, and its sign changes on a fine grid bisected:
 // a root finder that shares nothing with the sweep.
-std::vector<double> roots_by_hand(const ConvolutionObject& o, const Ray& ray, double t0,
+std::vector<double> roots_by_hand(const scene::ConvolutionObject& o, const Ray& ray, double t0,
                                   double t1) {
   auto g = [&](double t) {
     double sum = 0.0;
@@ -99,7 +99,7 @@ TEST(BlobSphereSurface, OneSphereOfAnyStrengthIsTheAnalyticSphere) {
 // A negative sphere carves a dent into a positive one; along lines through both, every root
 // agrees with the hand-written field's.
 TEST(BlobSphereSurface, NegativeStrengthCarvesTheSolid) {
-  const ConvolutionObject o =
+  const scene::ConvolutionObject o =
       blob({{{0, 0, 0}, {2.0, 2.0}}, {{0.8, 0, 0}, {-1.5, 1.0}}, {{-1.2, 0.3, 0}, {0.7, 0.8}}},
            0.5);
   const ConvolutionSurface surface(o);
@@ -121,10 +121,10 @@ TEST(BlobSphereSurface, NegativeStrengthCarvesTheSolid) {
 
 // `count` spheres in a box of side 4: 40 are sparse (lines cross about 1.5 supports), 300
 // dense enough (about 13) for the chunked first-root search.
-ConvolutionObject random_blob(std::mt19937_64& rng, int count) {
+scene::ConvolutionObject random_blob(std::mt19937_64& rng, int count) {
   std::uniform_real_distribution<double> u(-2.0, 2.0), radius(0.4, 1.0), positive(0.5, 1.5),
       negative(-1.0, -0.3), coin(0.0, 1.0);
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   for (int i = 0; i < count; ++i) {
     const double s = coin(rng) < 0.2 ? negative(rng) : positive(rng);
     o.blob_spheres.push_back({{u(rng), u(rng), u(rng)}, {s, radius(rng)}});

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "implicit/box_bvh.hpp"
-#include "implicit/ray_box.hpp"
+#include "core/box.hpp"
 
 namespace convray::implicit {
 namespace {

@@ -12,7 +12,7 @@
 #include <stdexcept>
 
 #include "field/cauchy.hpp"
-#include "implicit/ray_box.hpp"
+#include "core/box.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -22,19 +22,19 @@ Vec3 random_unit(std::mt19937_64& rng) {
   return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
 }
 
-ConvolutionObject cauchy_object(double s, double threshold) {
-  ConvolutionObject object;
-  object.kernel = {KernelType::cauchy, s};
+scene::ConvolutionObject cauchy_object(double s, double threshold) {
+  scene::ConvolutionObject object;
+  object.kernel = {field::KernelType::cauchy, s};
   object.threshold = threshold;
   return object;
 }
 
 // A soup of every primitive kind, overlapping, with a positive and a negative strength.
-ConvolutionObject mixed_object() {
-  ConvolutionObject object = cauchy_object(1.5, 1.0);
+scene::ConvolutionObject mixed_object() {
+  scene::ConvolutionObject object = cauchy_object(1.5, 1.0);
   std::mt19937_64 rng(41);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  MeshComponent mesh;
+  scene::MeshComponent mesh;
   mesh.weight = {1.0, 1.2};
   for (int i = 0; i < 12; ++i) {
     const Vec3 c(u(rng), u(rng), u(rng));
@@ -48,13 +48,13 @@ ConvolutionObject mixed_object() {
 }
 
 TEST(CauchySurface, FieldIsExactlyZeroJustOutsideTheBoxAndTheClosedFormInside) {
-  ConvolutionObject object = cauchy_object(1.0, 0.5);
+  scene::ConvolutionObject object = cauchy_object(1.0, 0.5);
   const field::Triangle t{{0.0, 0.0, 0.0}, {1.0, 0.2, 0.0}, {0.3, 1.0, 0.1}};
   const double margin = 0.75;
   object.meshes.push_back({{t}, {2.0, margin}});
   const CauchySurface surface(object);
   ASSERT_EQ(surface.support_boxes().size(), 1u);
-  const Box3& box = surface.support_boxes()[0];
+  const Box3 box = surface.support_boxes()[0];
   EXPECT_EQ(box.lo, Vec3(-margin, -margin, -margin));
   EXPECT_EQ(box.hi, Vec3(1.0 + margin, 1.0 + margin, 0.1 + margin));
   for (int axis = 0; axis < 3; ++axis) {
@@ -95,7 +95,7 @@ TEST(CauchySurface, PointGivesItsSphereOrItsTruncationBox) {
   TraceStats stats;
   int face_hits = 0;
   for (const double margin : {1.5 * sphere, 0.7 * sphere}) {
-    ConvolutionObject object = cauchy_object(s, T);
+    scene::ConvolutionObject object = cauchy_object(s, T);
     object.points.push_back({center, {1.0, margin}});
     const CauchySurface surface(object);
     for (int i = 0; i < 300; ++i) {
@@ -174,17 +174,17 @@ TEST(CauchySurface, TracerMatchesTheSlowTwin) {
 }
 
 TEST(CauchySurface, RefusesWhatItCannotDescribe) {
-  ConvolutionObject arcs = cauchy_object(1.0, 1.0);
+  scene::ConvolutionObject arcs = cauchy_object(1.0, 1.0);
   field::Arc arc;
   ASSERT_TRUE(field::arc_through({1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, arc));
   arcs.arcs.push_back({arc, {1.0, 1.0}});
   EXPECT_THROW(CauchySurface{arcs}, std::invalid_argument);
-  ConvolutionObject flat = cauchy_object(0.0, 1.0);
+  scene::ConvolutionObject flat = cauchy_object(0.0, 1.0);
   flat.points.push_back({{0, 0, 0}, {1.0, 1.0}});
   EXPECT_THROW(CauchySurface{flat}, std::invalid_argument);
-  ConvolutionObject quartic;
+  scene::ConvolutionObject quartic;
   quartic.points.push_back({{0, 0, 0}, {1.0, 1.0}});
-  quartic.kernel.type = KernelType::cauchy;
+  quartic.kernel.type = field::KernelType::cauchy;
   EXPECT_NO_THROW(CauchySurface{quartic});
 }
 

@@ -8,7 +8,7 @@
 
 #include "implicit/convolution_surface.hpp"
 #include "implicit/reference_tracer.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -20,7 +20,7 @@ Vec3 random_unit(std::mt19937_64& rng) {
 
 // One point of radius R: (1 - d^2/R^2)^2 = T is the sphere d = R sqrt(1 - sqrt(T)).
 TEST(ConvolutionSurface, SinglePointIsASphereOfKnownRadius) {
-  ConvolutionObject object;
+  scene::ConvolutionObject object;
   const double R = 2.0, T = 0.3;
   object.points.push_back({{1, 2, 3}, {1.0, R}});
   object.threshold = T;
@@ -53,10 +53,10 @@ TEST(ConvolutionSurface, SinglePointIsASphereOfKnownRadius) {
 
 // A triangle much larger than R: away from its edges the surface is the plane at the offset.
 TEST(ConvolutionSurface, LargeTriangleGivesThePlaneAtTheOffset) {
-  ConvolutionObject object;
+  scene::ConvolutionObject object;
   const double R = 1.0, offset = 0.4;
   object.meshes.push_back({{{{-100, -100, 0}, {100, -100, 0}, {0, 100, 0}}}, {1.0, R}});
-  object.threshold = threshold_for_offset(1.0, R, offset);
+  object.threshold = field::threshold_for_offset(1.0, R, offset);
   const ConvolutionSurface surface(object);
   std::mt19937_64 rng(32);
   std::uniform_real_distribution<double> u(-20, 20);
@@ -79,17 +79,17 @@ TEST(ConvolutionSurface, LargeTriangleGivesThePlaneAtTheOffset) {
 
 // Random skeletons of every kind, negative strengths included, traced from random rays by
 // the fast path and by the reference tracer: the same hits and misses, the same distances.
-ConvolutionObject random_skeleton(std::mt19937_64& rng) {
+scene::ConvolutionObject random_skeleton(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1.5, 1.5), r(0.4, 0.9), s(0.5, 1.5);
   auto point = [&] { return Vec3(u(rng), u(rng), u(rng)); };
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   for (int i = 0; i < 4; ++i) o.points.push_back({point(), {s(rng), r(rng)}});
   for (int i = 0; i < 3; ++i) o.segments.push_back({{point(), point()}, {s(rng), r(rng)}});
   for (int i = 0; i < 2; ++i) {
     field::Arc arc;
     if (field::arc_through(point(), point(), point(), arc)) o.arcs.push_back({arc, {s(rng), r(rng)}});
   }
-  MeshComponent mesh;
+  scene::MeshComponent mesh;
   for (int i = 0; i < 6; ++i) mesh.triangles.push_back({point(), point(), point()});
   mesh.weight = {1.0, 0.6};
   o.meshes.push_back(mesh);
@@ -183,7 +183,7 @@ TEST_P(EveryFastTracer, ArcsWideAgainstTheirRadiusAgreeWithTheReferenceTracer) {
   int rays = 0, disagreements = 0, roots_found = 0;
   for (double rho : {1.0, 3.0, 6.0, 12.0}) {
     for (double angle : {2.0 * kPi, kPi}) {
-      ConvolutionObject o;
+      scene::ConvolutionObject o;
       const double R = 0.5;
       field::Arc arc;
       arc.center = Vec3(0.3, -0.2, 0.1);
@@ -225,7 +225,7 @@ TEST_P(EveryFastTracer, ArcsWideAgainstTheirRadiusAgreeWithTheReferenceTracer) {
 }
 
 TEST(ConvolutionSurface, RejectsBadThresholdsAndWeights) {
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   o.threshold = 0.0;
   EXPECT_THROW(ConvolutionSurface{o}, std::invalid_argument);
   o.threshold = 1.0;

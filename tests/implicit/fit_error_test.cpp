@@ -100,9 +100,9 @@ enum class Kind { segment, triangle, arc, blob_cylinder };
 
 // One primitive of the given kind near the origin, strength 1, radius R; T a fraction of the
 // field's largest value, so that the surface lies somewhere inside the support.
-ConvolutionObject one_primitive(Kind kind, std::mt19937_64& rng, double R) {
+scene::ConvolutionObject one_primitive(Kind kind, std::mt19937_64& rng, double R) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   const Vec3 a = random_unit(rng), b = (0.2 + 2.0 * unit(rng)) * random_unit(rng),
              c = (0.2 + 2.0 * unit(rng)) * random_unit(rng);
   double peak = 1.0;

@@ -6,7 +6,7 @@
 
 #include "field/triangle.hpp"
 #include "implicit/mesh_field.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -61,7 +61,7 @@ TEST(MeshField, OffsetThresholdPutsAFlatSurfaceAtTheOffset) {
                                         {{-50, -50, 0}, {50, 50, 0}, {-50, 50, 0}}};
   const double r = 2.0, s = 0.8, offset = 0.7;
   const MeshField field(square, r, s);
-  const double t = threshold_for_offset(s, r, offset);
+  const double t = field::threshold_for_offset(s, r, offset);
   EXPECT_NEAR(field.value({1.3, -2.1, offset}), t, 1e-13 * t);
   EXPECT_NEAR(field.value({0, 0, -offset}), t, 1e-13 * t);
   EXPECT_GT(field.value({0, 0, 0.9 * offset}), t);

@@ -1,11 +1,11 @@
-// A mesh file's skeleton as convolution components (implicit/mesh_skeleton.hpp), and the
+// A mesh file's skeleton as convolution components (scene/mesh_skeleton.hpp), and the
 // thresholds that put the surface at an offset from a line or a point (threshold.hpp), each
 // against the independent quadratures of tests/reference/.
 #include <gtest/gtest.h>
 
 #include "implicit/convolution_surface.hpp"
-#include "implicit/mesh_skeleton.hpp"
-#include "implicit/threshold.hpp"
+#include "scene/mesh_skeleton.hpp"
+#include "field/threshold.hpp"
 #include "reference/reference_fields.hpp"
 
 namespace convray::implicit {
@@ -17,7 +17,7 @@ TEST(SkeletonThreshold, LineOffsetIsTheFieldOfALongSegmentAtThatDistance) {
     for (double offset : {0.0, 0.25 * radius, 0.5 * radius, 0.9 * radius}) {
       const auto reference =
           reference::reference_segment(Vec3(0, offset, 0), Vec3(-2 * radius, 0, 0), Vec3(2 * radius, 0, 0), radius);
-      EXPECT_NEAR(threshold_for_line_offset(2.0, radius, offset), 2.0 * reference.value, 1e-12 * radius)
+      EXPECT_NEAR(field::threshold_for_line_offset(2.0, radius, offset), 2.0 * reference.value, 1e-12 * radius)
           << "R " << radius << " d " << offset;
     }
   }
@@ -25,18 +25,18 @@ TEST(SkeletonThreshold, LineOffsetIsTheFieldOfALongSegmentAtThatDistance) {
 
 TEST(SkeletonThreshold, PointOffsetIsTheKernelAtThatDistance) {
   for (double offset : {0.0, 0.3, 0.5, 0.99}) {
-    EXPECT_NEAR(threshold_for_point_offset(1.5, 1.0, offset),
+    EXPECT_NEAR(field::threshold_for_point_offset(1.5, 1.0, offset),
                 1.5 * reference::reference_point(Vec3(offset, 0, 0), Vec3(0.0), 1.0).value, 1e-15);
   }
-  EXPECT_EQ(threshold_for_point_offset(1.0, 2.0, 1.0), 0.5625);  // (1 - 1/4)^2, by hand
+  EXPECT_EQ(field::threshold_for_point_offset(1.0, 2.0, 1.0), 0.5625);  // (1 - 1/4)^2, by hand
 }
 
 TEST(SkeletonThreshold, OffsetFromTheMostExtendedKind) {
-  EXPECT_EQ(resolve_threshold(1.0, 2.0, std::nullopt, std::nullopt, OffsetFrom::point), 0.5625);
-  EXPECT_EQ(resolve_threshold(1.0, 2.0, 0.5, std::nullopt, OffsetFrom::line), threshold_for_line_offset(1.0, 2.0, 0.5));
-  EXPECT_EQ(resolve_threshold(1.0, 2.0, 0.5, std::nullopt), threshold_for_offset(1.0, 2.0, 0.5));
-  EXPECT_EQ(resolve_threshold(1.0, 2.0, 0.5, 0.125, OffsetFrom::point), 0.125);
-  EXPECT_THROW(resolve_threshold(1.0, 2.0, 2.0, std::nullopt, OffsetFrom::point), std::invalid_argument);
+  EXPECT_EQ(field::resolve_threshold(1.0, 2.0, std::nullopt, std::nullopt, field::OffsetFrom::point), 0.5625);
+  EXPECT_EQ(field::resolve_threshold(1.0, 2.0, 0.5, std::nullopt, field::OffsetFrom::line), field::threshold_for_line_offset(1.0, 2.0, 0.5));
+  EXPECT_EQ(field::resolve_threshold(1.0, 2.0, 0.5, std::nullopt), field::threshold_for_offset(1.0, 2.0, 0.5));
+  EXPECT_EQ(field::resolve_threshold(1.0, 2.0, 0.5, 0.125, field::OffsetFrom::point), 0.125);
+  EXPECT_THROW(field::resolve_threshold(1.0, 2.0, 2.0, std::nullopt, field::OffsetFrom::point), std::invalid_argument);
 }
 
 // A file with all three kinds, by hand: a triangle, a polyline of two segments, two points.
@@ -50,7 +50,7 @@ mesh::LoadedMesh mixed_file() {
 }
 
 TEST(MeshSkeleton, PositionsOfEveryKind) {
-  const MeshSkeleton skeleton = skeleton_of(mixed_file());
+  const scene::MeshSkeleton skeleton = scene::skeleton_of(mixed_file());
   ASSERT_EQ(skeleton.triangles.size(), 1u);
   EXPECT_EQ(skeleton.triangles[0].c, Vec3(0, 1, 0));
   ASSERT_EQ(skeleton.segments.size(), 2u);
@@ -58,13 +58,13 @@ TEST(MeshSkeleton, PositionsOfEveryKind) {
   EXPECT_EQ(skeleton.segments[1].b, Vec3(4, 1, 0));
   ASSERT_EQ(skeleton.points.size(), 2u);
   EXPECT_EQ(skeleton.points[1], Vec3(0.5, 0, 3));
-  EXPECT_EQ(skeleton.offset_from(), OffsetFrom::plane);
+  EXPECT_EQ(skeleton.offset_from(), field::OffsetFrom::plane);
 }
 
 TEST(MeshSkeleton, FieldIsTheSumOfTheReferenceFieldsOfEveryItem) {
-  ConvolutionObject object;
-  const Weight weight{1.5, 0.8};
-  add_skeleton(skeleton_of(mixed_file()), weight, object);
+  scene::ConvolutionObject object;
+  const scene::Weight weight{1.5, 0.8};
+  scene::add_skeleton(scene::skeleton_of(mixed_file()), weight, object);
   EXPECT_EQ(object.meshes.size(), 1u);
   EXPECT_EQ(object.segments.size(), 2u);
   EXPECT_EQ(object.points.size(), 2u);
@@ -83,11 +83,11 @@ TEST(MeshSkeleton, PointCloudOffsetIsFromPoints) {
   mesh::LoadedMesh cloud;
   cloud.soup.vertices = {{0, 0, 0}, {5, 0, 0}};
   cloud.points = {0, 1};
-  EXPECT_EQ(skeleton_of(cloud).offset_from(), OffsetFrom::point);
+  EXPECT_EQ(scene::skeleton_of(cloud).offset_from(), field::OffsetFrom::point);
   mesh::LoadedMesh lines;
   lines.soup.vertices = {{0, 0, 0}, {5, 0, 0}};
   lines.segments = {{0, 1}};
-  EXPECT_EQ(skeleton_of(lines).offset_from(), OffsetFrom::line);
+  EXPECT_EQ(scene::skeleton_of(lines).offset_from(), field::OffsetFrom::line);
 }
 
 }  // namespace

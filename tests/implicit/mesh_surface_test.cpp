@@ -10,14 +10,14 @@
 #include "fixtures/defective_soups.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/reference_tracer.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "mesh/procedural.hpp"
 
 namespace convray::implicit {
 namespace {
 
-MeshComponent component(const mesh::TriangleSoup& soup, double radius) {
-  MeshComponent m;
+scene::MeshComponent component(const mesh::TriangleSoup& soup, double radius) {
+  scene::MeshComponent m;
   for (const auto& t : soup.triangles) {
     m.triangles.push_back({soup.vertices[t[0]], soup.vertices[t[1]], soup.vertices[t[2]]});
   }
@@ -81,22 +81,22 @@ INSTANTIATE_TEST_SUITE_P(Tracers, MeshSurfaceTracer, ::testing::Values(Tracer::f
                          });
 
 TEST_P(MeshSurfaceTracer, TorusAgreesWithTheReference) {
-  ConvolutionObject object;
+  scene::ConvolutionObject object;
   const double R = 0.3;
   object.meshes.push_back(component(mesh::torus(1.0, 0.35, 24, 12), R));
-  object.threshold = threshold_for_offset(1.0, R, 0.5 * R);
+  object.threshold = field::threshold_for_offset(1.0, R, 0.5 * R);
   expect_agreement(compare_on_grid(ConvolutionSurface(object, nullptr, GetParam()), R, {0.5, 2.0, -4.0}, 36));
 }
 
 TEST_P(MeshSurfaceTracer, DefectiveSoupAndSheetWithHoleAgreeWithTheReference) {
-  ConvolutionObject object;
+  scene::ConvolutionObject object;
   const double R = 0.25;
   object.meshes.push_back(component(mesh::defective_soup(), R));
   mesh::TriangleSoup sheet = mesh::sheet_with_hole(1.5, 12, 0.5);
   for (Vec3& v : sheet.vertices) v = Vec3(v.x, v.y - 0.0, v.z - 1.4);
   object.meshes.push_back(component(sheet, 0.2));
   object.segments.push_back({{{-1.5, 1.2, 0}, {1.5, 1.2, 0.3}}, {2.0, 0.4}});
-  object.threshold = threshold_for_offset(1.0, R, 0.5 * R);
+  object.threshold = field::threshold_for_offset(1.0, R, 0.5 * R);
   expect_agreement(compare_on_grid(ConvolutionSurface(object, nullptr, GetParam()), 0.2, {1.0, 1.5, -4.0}, 36));
 }
 

@@ -10,7 +10,7 @@
 #include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_field.hpp"
 #include "implicit/repeated_triangles.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -85,12 +85,12 @@ TEST(RepeatedTriangles, MergedSurfaceHasTheFieldOfTheUnmergedSum) {
   std::mt19937_64 rng(6);
   const std::vector<Triangle> soup = soup_with_copies(rng, 40);
   const double R = 0.4, strength = 1.7;
-  ConvolutionObject object;
-  MeshComponent mesh;
+  scene::ConvolutionObject object;
+  scene::MeshComponent mesh;
   mesh.triangles = soup;
   mesh.weight = {strength, R};
   object.meshes.push_back(mesh);
-  object.threshold = threshold_for_offset(strength, R, 0.5 * R);
+  object.threshold = field::threshold_for_offset(strength, R, 0.5 * R);
   const ConvolutionSurface surface(object);
   EXPECT_EQ(surface.merged_triangle_count(), soup.size() - merge_repeated(soup)->triangles.size());
   std::uniform_real_distribution<double> u(-1.2, 1.2);
@@ -127,6 +127,28 @@ TEST(RepeatedTriangles, MergedMeshFieldHasTheFieldOfTheUnmergedSum) {
       EXPECT_LT(glm::length(field.field(p).gradient - sum.gradient),
                 1e-10 * (1.0 + glm::length(sum.gradient)));
     }
+  }
+}
+
+// The supports the polygonizer visits: one box per distinct triangle, the box each triangle
+// alone would have (accel::triangle_support_box, the same as without the copies).
+TEST(SupportBoxes, ExactRepeatsShareOneBox) {
+  const Triangle a{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  const Triangle b{Vec3(2, 0, 0), Vec3(3, 1, 0), Vec3(2, 0, 1)};
+  const Triangle a_turned{a.b, a.c, a.a};  // the same corners, another order
+  scene::ConvolutionObject copies, distinct;
+  copies.meshes.push_back({{a, b, a, a_turned, b, a}, {1.0, 0.25}});
+  distinct.meshes.push_back({{a, b}, {1.0, 0.25}});
+  auto by_corner = [](const Box3& p, const Box3& q) { return p.lo.x < q.lo.x; };
+  std::vector<Box3> got = ConvolutionSurface(copies).support_boxes();
+  std::vector<Box3> want = ConvolutionSurface(distinct).support_boxes();
+  std::sort(got.begin(), got.end(), by_corner);
+  std::sort(want.begin(), want.end(), by_corner);
+  ASSERT_EQ(got.size(), 2u);
+  ASSERT_EQ(want.size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(got[i].lo, want[i].lo) << i;
+    EXPECT_EQ(got[i].hi, want[i].hi) << i;
   }
 }
 

@@ -22,7 +22,7 @@ Vec3 random_unit(std::mt19937_64& rng) {
 
 // Where the ray crosses each sphere's ball: the chord around the closest approach tc, from
 // the distance of the closest point (not b^2 - c, which cancels far from the origin).
-std::vector<accel::SupportInterval> chords(const ConvolutionObject& o, const Ray& ray) {
+std::vector<accel::SupportInterval> chords(const scene::ConvolutionObject& o, const Ray& ray) {
   std::vector<accel::SupportInterval> out;
   for (uint32_t i = 0; i < o.blob_spheres.size(); ++i) {
     const auto& s = o.blob_spheres[i];
@@ -36,7 +36,7 @@ std::vector<accel::SupportInterval> chords(const ConvolutionObject& o, const Ray
 }
 
 // sum s (1 - d^2/r^2)^2 - T over the spheres listed, at ray.at(t).
-double field_by_hand(const ConvolutionObject& o, const std::vector<uint32_t>& ids, const Ray& ray,
+double field_by_hand(const scene::ConvolutionObject& o, const std::vector<uint32_t>& ids, const Ray& ray,
                      double t) {
   double sum = 0.0;
   for (uint32_t i : ids) {
@@ -84,10 +84,10 @@ std::vector<double> sweep(const ConvolutionSurface& surface, const Ray& ray,
   return out;
 }
 
-ConvolutionObject random_blob(std::mt19937_64& rng, int count) {
+scene::ConvolutionObject random_blob(std::mt19937_64& rng, int count) {
   std::uniform_real_distribution<double> u(-2.0, 2.0), radius(0.4, 1.0), positive(0.5, 1.5),
       negative(-1.0, -0.3), coin(0.0, 1.0);
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   for (int i = 0; i < count; ++i) {
     const double s = coin(rng) < 0.2 ? negative(rng) : positive(rng);
     o.blob_spheres.push_back({{u(rng), u(rng), u(rng)}, {s, radius(rng)}});
@@ -102,7 +102,7 @@ TEST(SphereSweep, RootsAreThoseOfTheHandWrittenField) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int compared = 0, rays = 0;
   for (int scene = 0; scene < 6; ++scene) {
-    const ConvolutionObject o = random_blob(rng, 40);
+    const scene::ConvolutionObject o = random_blob(rng, 40);
     const ConvolutionSurface surface(o);
     ASSERT_TRUE(surface.impl().spheres_only);
     for (int i = 0; i < 60; ++i) {
@@ -147,7 +147,7 @@ TEST(SphereSweep, FirstRootComesWithTheExactGradient) {
   std::mt19937_64 rng(1432);
   int found = 0;
   for (int scene = 0; scene < 6; ++scene) {
-    const ConvolutionObject o = random_blob(rng, 40);
+    const scene::ConvolutionObject o = random_blob(rng, 40);
     const ConvolutionSurface surface(o);
     for (int i = 0; i < 80; ++i) {
       const Vec3 origin = 5.0 * random_unit(rng);
@@ -183,7 +183,7 @@ TEST(SphereSweep, FirstRootComesWithTheExactGradient) {
 // s (1 - d^2/r^2)^2 = T, d = r sqrt(1 - sqrt(T/s)); a tangent chord (enter == exit) and a
 // sphere too weak to reach T add nothing.
 TEST(SphereSweep, SeparateSpheresAreAnalyticSpheres) {
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   o.threshold = 0.3;
   const double strengths[4] = {1.0, 2.0, 0.2, 0.7}, radii[4] = {0.5, 1.0, 1.0, 2.0};
   double x = 0.0;
@@ -222,7 +222,7 @@ TEST(SphereSweep, LongChainsKeepTheirAccuracy) {
   std::uniform_real_distribution<double> strength(0.5, 1.5), jitter(-0.05, 0.05);
   constexpr int kCount = 3000;
   constexpr double kSpacing = 0.35, kRadius = 1.0;
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   for (int i = 0; i < kCount; ++i) {
     o.blob_spheres.push_back({{i * kSpacing, jitter(rng), jitter(rng)}, {strength(rng), kRadius}});
   }

@@ -36,21 +36,21 @@ Mat4 rigid(double degrees, const Vec3& axis, const Vec3& translation) {
 }
 
 // What the parser makes of `mesh { "torus" <transform> }`: the placed triangles and their source.
-MeshComponent placed_mesh(const std::shared_ptr<const Triangles>& file, const Mat4& placement) {
-  MeshComponent mesh;
+scene::MeshComponent placed_mesh(const std::shared_ptr<const Triangles>& file, const Mat4& placement) {
+  scene::MeshComponent mesh;
   for (const field::Triangle& t : *file) {
     mesh.triangles.push_back({transform_point(placement, t.a), transform_point(placement, t.b),
                               transform_point(placement, t.c)});
   }
   mesh.weight = {1.0, 0.3};
-  mesh.source = MeshSource{file, placement};
+  mesh.source = scene::MeshSource{file, placement};
   return mesh;
 }
 
 // A mesh blended with a segment and an arc that reach into it.
-ConvolutionObject limb_and_mesh(const std::shared_ptr<const Triangles>& file,
+scene::ConvolutionObject limb_and_mesh(const std::shared_ptr<const Triangles>& file,
                                 const Mat4& placement) {
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   o.meshes.push_back(placed_mesh(file, placement));
   const Vec3 at = transform_point(placement, Vec3(0.0));
   o.segments.push_back({{at + Vec3(0.8, 0, 0), at + Vec3(2.0, 0.5, 0.2)}, {0.6, 0.4}});
@@ -68,8 +68,8 @@ size_t instances(const ConvolutionSurface& surface) {
 }
 
 // The same object without sources: what a surface built from scratch sees.
-ConvolutionObject without_sources(ConvolutionObject o) {
-  for (MeshComponent& m : o.meshes) m.source.reset();
+scene::ConvolutionObject without_sources(scene::ConvolutionObject o) {
+  for (scene::MeshComponent& m : o.meshes) m.source.reset();
   return o;
 }
 
@@ -103,7 +103,7 @@ void expect_same_surface(const ConvolutionSurface& got, const ConvolutionSurface
 TEST(SupportCache, CachedSurfaceFindsTheRootsAndFieldsOfADirectBuild) {
   const auto file = torus_file();
   const Mat4 placement = rigid(30, {1, 1, 0}, {2, -1, 0.5});
-  const ConvolutionObject object = limb_and_mesh(file, placement);
+  const scene::ConvolutionObject object = limb_and_mesh(file, placement);
   SupportCache cache;
   const ConvolutionSurface cached(object, &cache);
   const ConvolutionSurface direct(without_sources(object));
@@ -118,7 +118,7 @@ TEST(SupportCache, CachedSurfaceFindsTheRootsAndFieldsOfADirectBuild) {
 
 TEST(SupportCache, CachedSurfaceAgreesWithTheReferenceTracer) {
   const auto file = torus_file();
-  const ConvolutionObject object = limb_and_mesh(file, rigid(-50, {0, 1, 1}, {0.5, 0.2, -1}));
+  const scene::ConvolutionObject object = limb_and_mesh(file, rigid(-50, {0, 1, 1}, {0.5, 0.2, -1}));
   SupportCache cache;
   const ConvolutionSurface surface(object, &cache);
   std::mt19937_64 rng(42);
@@ -141,7 +141,7 @@ TEST(SupportCache, CachedSurfaceAgreesWithTheReferenceTracer) {
 
 TEST(SupportCache, TheSameObjectTwiceIsBuiltOnce) {
   const auto file = torus_file();
-  const ConvolutionObject object = limb_and_mesh(file, rigid(10, {0, 0, 1}, {1, 2, 3}));
+  const scene::ConvolutionObject object = limb_and_mesh(file, rigid(10, {0, 0, 1}, {1, 2, 3}));
   SupportCache cache;
   const ConvolutionSurface first(object, &cache);
   const ConvolutionSurface second(object, &cache);
@@ -157,7 +157,7 @@ TEST(SupportCache, ARigidMoveReusesTheFilesHierarchy) {
   const ConvolutionSurface before(limb_and_mesh(file, rigid(0, {0, 0, 1}, {0, 0, 0})), &cache);
   cache.next_frame();
   const Mat4 moved = rigid(65, {0.3, 1, 0.2}, {1.5, -0.5, 2});
-  const ConvolutionObject object = limb_and_mesh(file, moved);
+  const scene::ConvolutionObject object = limb_and_mesh(file, moved);
   const ConvolutionSurface after(object, &cache);
   EXPECT_EQ(cache.counts().builds, 1u);
   EXPECT_EQ(cache.counts().reuses, 1u);
@@ -171,7 +171,7 @@ TEST(SupportCache, AScaledPlacementIsBuiltOverThePlacedTriangles) {
   SupportCache cache;
   const ConvolutionSurface plain(limb_and_mesh(file, Mat4(1.0)), &cache);
   const Mat4 scaled = glm::scale(rigid(20, {1, 0, 0}, {0, 1, 0}), Vec3(1.5));
-  const ConvolutionObject object = limb_and_mesh(file, scaled);
+  const scene::ConvolutionObject object = limb_and_mesh(file, scaled);
   const ConvolutionSurface first(object, &cache);
   EXPECT_EQ(cache.counts().builds, 2u);
   const ConvolutionSurface again(object, &cache);
@@ -203,7 +203,7 @@ TEST(SupportCache, NextFrameDropsWhatTheLastFrameDidNotUse) {
 TEST(SupportCache, ComponentsWithoutSourceAreBuiltAsBefore) {
   const auto file = torus_file();
   SupportCache cache;
-  const ConvolutionObject object = without_sources(limb_and_mesh(file, Mat4(1.0)));
+  const scene::ConvolutionObject object = without_sources(limb_and_mesh(file, Mat4(1.0)));
   const ConvolutionSurface surface(object, &cache);
   EXPECT_EQ(cache.counts().builds, 0u);
   EXPECT_EQ(cache.size(), 0u);

@@ -12,7 +12,7 @@
 
 #include "implicit/convolution_surface.hpp"
 #include "implicit/reference_tracer.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -23,10 +23,10 @@ Vec3 random_unit(std::mt19937_64& rng) {
 }
 
 // One primitive of each kind, big and small against R, with strengths of both signs.
-ConvolutionObject one_of_each(std::mt19937_64& rng) {
+scene::ConvolutionObject one_of_each(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   auto point = [&] { return Vec3(u(rng), u(rng), u(rng)); };
-  ConvolutionObject o;
+  scene::ConvolutionObject o;
   o.points.push_back({point(), {1.3, 0.7}});
   o.blob_spheres.push_back({point(), {-0.8, 0.9}});
   o.blob_cylinders.push_back({point(), point(), {1.1, 0.6}});
@@ -34,7 +34,7 @@ ConvolutionObject one_of_each(std::mt19937_64& rng) {
   o.segments.push_back({{point(), 5.0 * point()}, {1.0, 0.4}});  // much longer than 2R
   field::Arc arc;
   if (field::arc_through(point(), point(), 2.0 * point(), arc)) o.arcs.push_back({arc, {1.2, 0.5}});
-  MeshComponent small, large;
+  scene::MeshComponent small, large;
   small.triangles.push_back({point(), point(), point()});
   small.weight = {1.0, 0.8};
   large.triangles.push_back({4.0 * point(), 4.0 * point(), 4.0 * point()});  // area >> pi R^2
@@ -82,12 +82,12 @@ TEST(WindowMarch, CurvatureBoundHoldsForEveryKindAlongRandomLines) {
 // the plane's field (pi R^2/3)(1 - h^2/R^2)^3) comes within a factor 2 of it.
 TEST(WindowMarch, WideTrianglesKeepTheIntegralCurvatureBound) {
   const double R = 0.2;
-  ConvolutionObject object;
-  MeshComponent mesh;
+  scene::ConvolutionObject object;
+  scene::MeshComponent mesh;
   mesh.triangles.push_back({{-3, -3, 0}, {3, -3, 0}, {0, 3, 0}});
   mesh.weight = {1.0, R};
   object.meshes.push_back(mesh);
-  object.threshold = threshold_for_offset(1.0, R, 0.5 * R);
+  object.threshold = field::threshold_for_offset(1.0, R, 0.5 * R);
   const ConvolutionSurface surface(object);
   const ConvolutionSurface::Impl& s = surface.impl();
   const double bound = curvature_bound(s, s.triangle_base);
@@ -113,15 +113,15 @@ TEST(WindowMarch, WideTrianglesKeepTheIntegralCurvatureBound) {
 // and misses as the reference tracer, and the same distances.
 TEST(WindowMarch, GrazingRaysAgreeWithTheReferenceTracer) {
   const double R = 0.5;
-  ConvolutionObject object;
-  MeshComponent octahedron;
+  scene::ConvolutionObject object;
+  scene::MeshComponent octahedron;
   const Vec3 v[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   const int faces[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                            {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
   for (const auto& f : faces) octahedron.triangles.push_back({v[f[0]], v[f[1]], v[f[2]]});
   octahedron.weight = {1.0, R};
   object.meshes.push_back(octahedron);
-  object.threshold = threshold_for_offset(1.0, R, 0.5 * R);
+  object.threshold = field::threshold_for_offset(1.0, R, 0.5 * R);
   const ConvolutionSurface fast(object);
   std::mt19937_64 rng(72);
   TraceStats stats;

@@ -48,20 +48,5 @@ TEST(SizeEstimate, ALatticeTooLargePerAxisIsRefusedAsPolygonizeRefusesIt) {
   EXPECT_THROW(estimate_size(sum.source(0.3), 1e-7), std::invalid_argument);
 }
 
-TEST(SupportBoxes, ExactRepeatsShareOneBox) {
-  const field::Triangle a{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-  const field::Triangle b{Vec3(2, 0, 0), Vec3(3, 1, 0), Vec3(2, 0, 1)};
-  const field::Triangle a_turned{a.b, a.c, a.a};  // the same corners, another order
-  implicit::ConvolutionObject copies, distinct;
-  copies.meshes.push_back({{a, b, a, a_turned, b, a}, {1.0, 0.25}});
-  distinct.meshes.push_back({{a, b}, {1.0, 0.25}});
-  const std::vector<Box3> got = support_boxes(copies), want = support_boxes(distinct);
-  ASSERT_EQ(got.size(), 2u);
-  for (size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(got[i].lo, want[i].lo) << i;
-    EXPECT_EQ(got[i].hi, want[i].hi) << i;
-  }
-}
-
 }  // namespace
 }  // namespace convray::polygonize

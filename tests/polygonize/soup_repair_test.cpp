@@ -7,7 +7,7 @@
 
 #include "fixtures/defective_soups.hpp"
 #include "implicit/mesh_field.hpp"
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "mesh/procedural.hpp"
 #include "mesh_expectations.hpp"
 #include "polygonize/outer_shells.hpp"
@@ -29,10 +29,8 @@ std::unique_ptr<SoupField> soup_field(const mesh::TriangleSoup& soup, double rad
     triangles.push_back({a, b, c});
   }
   auto f = std::make_unique<SoupField>(SoupField{implicit::MeshField(triangles, radius), {}});
-  implicit::ConvolutionObject object;
-  object.meshes.push_back({triangles, {1.0, radius}});
-  f->source.supports = support_boxes(object);
-  f->source.threshold = implicit::threshold_for_offset(1.0, radius, offset);
+  f->source.supports = triangle_support_boxes(f->field.triangles(), radius);
+  f->source.threshold = field::threshold_for_offset(1.0, radius, offset);
   const implicit::MeshField* mesh_field = &f->field;
   f->source.field = [mesh_field](const Vec3& p) { return mesh_field->field(p); };
   return f;

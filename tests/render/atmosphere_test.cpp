@@ -19,7 +19,7 @@ scene::Fog constant_fog(double filter, double transmit) {
   return fog;
 }
 
-const implicit::Ray kRay{Vec3(0, 0, -10), Vec3(0, 0, 1)};
+const Ray kRay{Vec3(0, 0, -10), Vec3(0, 0, 1)};
 const Vec3 kSurface(0.7, 0.5, 0.3);
 
 // POV-Ray 3.7 renders: a plane of colour <0.7,0.5,0.3> 10 units away through fog distance 8,
@@ -51,7 +51,7 @@ TEST(Fog, RaysLeavingTheSceneSeeTheFogColourOverTheBackground) {
 }
 
 // The optical depth by the midpoint rule over many small steps.
-double ground_fog_quadrature(const scene::Fog& fog, const implicit::Ray& ray, double depth) {
+double ground_fog_quadrature(const scene::Fog& fog, const Ray& ray, double depth) {
   const int steps = 200000;
   double sum = 0.0;
   for (int k = 0; k < steps; ++k) {
@@ -67,15 +67,15 @@ TEST(Fog, GroundFogDepthIsTheIntegralOfItsDensity) {
   fog.kind = scene::Fog::Kind::ground;
   fog.offset = 0.5;
   fog.altitude = 2.0;
-  for (const implicit::Ray& ray :
-       {implicit::Ray{Vec3(0, -1, 0), glm::normalize(Vec3(0, 1, 2))},
-        implicit::Ray{Vec3(0, 6, 0), glm::normalize(Vec3(1, -1, 1))},
-        implicit::Ray{Vec3(0, 3, 0), Vec3(1, 0, 0)}, implicit::Ray{Vec3(0, 0, 0), Vec3(0, 0, 1)}}) {
+  for (const Ray& ray :
+       {Ray{Vec3(0, -1, 0), glm::normalize(Vec3(0, 1, 2))},
+        Ray{Vec3(0, 6, 0), glm::normalize(Vec3(1, -1, 1))},
+        Ray{Vec3(0, 3, 0), Vec3(1, 0, 0)}, Ray{Vec3(0, 0, 0), Vec3(0, 0, 1)}}) {
     EXPECT_NEAR(ground_fog_depth(fog, ray, 12.0), ground_fog_quadrature(fog, ray, 12.0), 1e-6);
   }
   // Rising to infinity the density decays like 1/u^2: finite depth. Straight up from the
   // offset: integral of 1 / (1 + (s/2)^2) = 2 atan(infinity) = pi.
-  EXPECT_NEAR(ground_fog_depth(fog, implicit::Ray{Vec3(0, 0.5, 0), Vec3(0, 1, 0)}, kInfinity), kPi,
+  EXPECT_NEAR(ground_fog_depth(fog, Ray{Vec3(0, 0.5, 0), Vec3(0, 1, 0)}, kInfinity), kPi,
               1e-12);
 }
 
@@ -90,7 +90,7 @@ TEST(Fog, GroundFogDensityAsPovRay) {
   fog.altitude = 0.5;
   fog.color = scene::Color{Vec3(0.2, 0.4, 0.9)};
   auto red_at = [&](double y) {
-    return apply_fog(fog, implicit::Ray{Vec3(0, y, -10), Vec3(0, 0, 1)}, 10.0, kSurface).r;
+    return apply_fog(fog, Ray{Vec3(0, y, -10), Vec3(0, 0, 1)}, 10.0, kSurface).r;
   };
   EXPECT_NEAR(red_at(1.45), 0.57946, 2e-5);
   EXPECT_NEAR(red_at(0.45), 0.30095, 2e-5);

@@ -18,7 +18,7 @@ using namespace convray::testing;
 constexpr int kPixels = 40;  // over 4 x 4 units: pixel centres at +-0.05, +-0.15, ...
 constexpr double kSpan = 4.0;
 
-Film render_point(const implicit::ConvolutionObject& object) {
+Film render_point(const scene::ConvolutionObject& object) {
   scene::Scene scene;
   scene.camera = orthographic_camera(Vec3(0, 0, -10), kSpan, kSpan);
   scene::Implicit implicit;
@@ -40,12 +40,12 @@ TEST(CauchyRender, TruncatedPointIsItsBoxWhereTheQuarticPointIsABall) {
   // Cauchy, s = 2, T = 0.2: 1/(1 + 4 r^2)^2 = T at r = 0.556; margin 0.33 cuts it to the
   // cube |x|, |y|, |z| <= 0.33 (whose corners, 0.57 away, are outside the ball: the solid is
   // cube and ball, whose outline along z is the full square, as its corners are 0.467 away).
-  implicit::ConvolutionObject cauchy;
-  cauchy.kernel = {implicit::KernelType::cauchy, 2.0};
+  scene::ConvolutionObject cauchy;
+  cauchy.kernel = {field::KernelType::cauchy, 2.0};
   cauchy.threshold = 0.2;
   cauchy.points.push_back({Vec3(0.0), {1.0, 0.33}});
   // Quartic, R = 1, T = 0.4: the ball of radius sqrt(1 - sqrt(0.4)) = 0.606.
-  implicit::ConvolutionObject quartic;
+  scene::ConvolutionObject quartic;
   quartic.threshold = 0.4;
   quartic.points.push_back({Vec3(0.0), {1.0, 1.0}});
   const Film square = render_point(cauchy), disc = render_point(quartic);

@@ -15,7 +15,6 @@
 #include "scene/quick_scene.hpp"
 
 namespace convray::render {
-using implicit::Ray;
 namespace {
 
 constexpr double kTol = 1e-12;

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "geometry/world.hpp"
-#include "render/image_file.hpp"
+#include "core/image_file.hpp"
 #include "render/render_scene.hpp"
 #include "scene_records.hpp"
 

@@ -44,7 +44,7 @@ TEST(RenderScene, DiffuseSphereLitHeadOnIsLambert) {
 
   // Another pixel, intersected by hand.
   const SceneCamera camera(scene.camera, 11, 11);
-  const implicit::Ray ray = camera.primary_ray(6, 4);
+  const Ray ray = camera.primary_ray(6, 4);
   const double b = glm::dot(ray.origin, ray.direction);
   const double t = -b - std::sqrt(b * b - (glm::dot(ray.origin, ray.origin) - 1.0));
   const Vec3 p = ray.at(t);

@@ -9,7 +9,6 @@
 namespace convray::render {
 namespace {
 
-using implicit::Ray;
 
 void expect_near(const Vec3& actual, const Vec3& expected, double tol = 1e-12) {
   EXPECT_NEAR(actual.x, expected.x, tol);

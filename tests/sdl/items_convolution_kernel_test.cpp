@@ -1,13 +1,13 @@
 // `kernel quartic` and `kernel cauchy [s]` in `convolution { }`: the kernel reaches the scene
 // record, the offset gives the Cauchy plane's threshold, and bad input fails at file:line:col.
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "items_test_support.hpp"
 
 namespace convray::sdl {
 namespace {
 
 using namespace testing;
-using implicit::KernelType;
+using field::KernelType;
 
 scene::Implicit convolution_of(const ParseResult& result) {
   return shape_of<scene::Implicit>(only_object(result));

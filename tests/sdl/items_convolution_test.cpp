@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "implicit/threshold.hpp"
+#include "field/threshold.hpp"
 #include "items_test_support.hpp"
 
 namespace convray::sdl {
@@ -32,7 +32,7 @@ TEST(ItemsConvolution, OffsetAndThreshold) {
       convolution_of(parse("convolution { radius 2 strength 3 offset 0.5 point { 0 } }"));
   // s (pi/3) (R^2 - d^2)^3 / R^4 = 3 (pi/3) (3.75)^3 / 16.
   EXPECT_NEAR(offset.object.threshold, kPi * 3.75 * 3.75 * 3.75 / 16.0, 1e-12);
-  EXPECT_DOUBLE_EQ(offset.object.threshold, implicit::threshold_for_offset(3, 2, 0.5));
+  EXPECT_DOUBLE_EQ(offset.object.threshold, field::threshold_for_offset(3, 2, 0.5));
   EXPECT_EQ(offset.object.points[0].weight.radius, 2.0);
   EXPECT_EQ(offset.object.points[0].weight.strength, 3.0);
   const auto& raw = convolution_of(parse("convolution { threshold 0.8 point { 0 } }"));
@@ -117,7 +117,7 @@ TEST(ItemsConvolution, MeshFromAnObjFile) {
       parse("convolution { radius 0.5 mesh { \"" + path + "\" strength 2 scale 2 } }",
             reading_from(folder.string())));
   ASSERT_EQ(c.object.meshes.size(), 1u);
-  const implicit::MeshComponent& mesh = c.object.meshes[0];
+  const scene::MeshComponent& mesh = c.object.meshes[0];
   ASSERT_EQ(mesh.triangles.size(), 2u);
   EXPECT_EQ(mesh.weight.strength, 2.0);
   EXPECT_DOUBLE_EQ(mesh.weight.radius, 1.0);
@@ -128,7 +128,7 @@ TEST(ItemsConvolution, MeshFromAnObjFile) {
   expect_near(bounds.lo, Vec3(0.0));
   expect_near(bounds.hi, Vec3(2, 2, 0));
   // The threshold follows the object's defaults (strength 1, radius 0.5, offset 0.25).
-  EXPECT_DOUBLE_EQ(c.object.threshold, implicit::threshold_for_offset(1, 0.5, 0.25));
+  EXPECT_DOUBLE_EQ(c.object.threshold, field::threshold_for_offset(1, 0.5, 0.25));
   std::filesystem::remove_all(folder);
 }
 

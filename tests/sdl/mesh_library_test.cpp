@@ -28,7 +28,7 @@ void write_square(const std::filesystem::path& file, int side) {
                       << side << " 0\nf 1 2 3 4\n";
 }
 
-implicit::MeshComponent first_mesh(const ParseResult& result) {
+scene::MeshComponent first_mesh(const ParseResult& result) {
   return shape_of<scene::Implicit>(only_object(result)).object.meshes.at(0);
 }
 
@@ -49,8 +49,8 @@ TEST(MeshLibrary, TwoParsesShareOneReadOfTheFile) {
   const auto frame0 = parse_file((folder.path / "scene.pov").string(), options);
   options.clock = 0.5;
   const auto frame1 = parse_file((folder.path / "scene.pov").string(), options);
-  const implicit::MeshComponent a = first_mesh(frame0);
-  const implicit::MeshComponent b = first_mesh(frame1);
+  const scene::MeshComponent a = first_mesh(frame0);
+  const scene::MeshComponent b = first_mesh(frame1);
   ASSERT_TRUE(a.source && b.source);
   EXPECT_EQ(a.source->local.get(), b.source->local.get());
   EXPECT_EQ(library->reads(), 1u);
@@ -95,9 +95,9 @@ TEST(MeshLibrary, ThePlacementOfTheFilesTrianglesGivesTheComponents) {
                             "\" scale 2 rotate <10, 20, 30> translate <1, -2, 3> } "
                             "triangle { <0,0,0>, <1,0,0>, <0,1,0> } }",
                             reading_from(folder.path.string()));
-  const implicit::ConvolutionObject object = shape_of<scene::Implicit>(only_object(result)).object;
+  const scene::ConvolutionObject object = shape_of<scene::Implicit>(only_object(result)).object;
   ASSERT_EQ(object.meshes.size(), 2u);
-  const implicit::MeshComponent& mesh = object.meshes[0];
+  const scene::MeshComponent& mesh = object.meshes[0];
   ASSERT_TRUE(mesh.source);
   const std::vector<field::Triangle>& local = *mesh.source->local;
   ASSERT_EQ(local.size(), mesh.triangles.size());
@@ -126,7 +126,7 @@ TEST(MeshLibrary, AFilesPointsAndSegmentsArePlacedComponentsOfTheMeshsWeight) {
                             "\" strength 2 scale 2 translate <0, 0, 5> } }",
                             reading_from(folder.path.string()));
   const scene::Implicit& implicit = shape_of<scene::Implicit>(only_object(result));
-  const implicit::ConvolutionObject& object = implicit.object;
+  const scene::ConvolutionObject& object = implicit.object;
   EXPECT_TRUE(object.meshes.empty());  // no triangles: no mesh component
   ASSERT_EQ(object.segments.size(), 2u);
   ASSERT_EQ(object.points.size(), 2u);

@@ -1,5 +1,5 @@
 #pragma once
-// OpenImageIO's formats, reached through libconvray_oiio.so (render/oiio_plugin_api.hpp),
+// OpenImageIO's formats, reached through libconvray_oiio.so (core/oiio_plugin_api.hpp),
 // which is loaded on the first call of any function here and stays loaded. It is looked for
 // beside the running program (/proc/self/exe): build/convray loads build/libconvray_oiio.so.
 //
@@ -7,7 +7,7 @@
 // reason) when the plugin cannot be loaded; `path` is the image the caller was working on.
 #include <string>
 
-namespace convray::render::image_plugin {
+namespace convray::image_plugin {
 
 // Whether OpenImageIO has a writer for files named like `path`. Touches no file.
 bool can_write(const std::string& path);
@@ -20,4 +20,4 @@ void write(const std::string& format_path, const std::string& file, int width, i
 // Whether `path` reads back whole as an image of this size (see ConvrayOiioReadsWholeFn).
 bool reads_whole(const std::string& path, int width, int height);
 
-}  // namespace convray::render::image_plugin
+}  // namespace convray::image_plugin

@@ -8,11 +8,11 @@
 
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
-#include "implicit/convolution_object.hpp"
-#include "implicit/threshold.hpp"
+#include "scene/convolution_object.hpp"
+#include "field/threshold.hpp"
 #include "mesh/load.hpp"
 
-namespace convray::implicit {
+namespace convray::scene {
 
 struct MeshSkeleton {
   std::vector<field::Triangle> triangles;
@@ -20,8 +20,8 @@ struct MeshSkeleton {
   std::vector<Vec3> points;
 
   // What an offset is measured from: triangles, else segments, else points.
-  OffsetFrom offset_from() const {
-    return !triangles.empty() ? OffsetFrom::plane : !segments.empty() ? OffsetFrom::line : OffsetFrom::point;
+  field::OffsetFrom offset_from() const {
+    return !triangles.empty() ? field::OffsetFrom::plane : !segments.empty() ? field::OffsetFrom::line : field::OffsetFrom::point;
   }
 };
 
@@ -30,4 +30,4 @@ MeshSkeleton skeleton_of(const mesh::LoadedMesh& mesh);
 // Appends the skeleton's components to `object` (the triangles moved in).
 void add_skeleton(MeshSkeleton skeleton, const Weight& weight, ConvolutionObject& object);
 
-}  // namespace convray::implicit
+}  // namespace convray::scene

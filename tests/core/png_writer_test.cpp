@@ -1,9 +1,9 @@
-// The PNG writer (libpng, render/png_writer.hpp) against what convray wrote through
+// The PNG writer (libpng, core/png_writer.hpp) against what convray wrote through
 // OpenImageIO before: the same floats encoded by OpenImageIO's own PNG writer here, both files
 // decoded by OpenImageIO's reader (a decoder independent of ours), every level equal; the
 // 8-bit rule against OpenImageIO's float-to-uint8 conversion; the colour chunks against those
 // OpenImageIO writes.
-#include "render/png_writer.hpp"
+#include "core/png_writer.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "render/image_file.hpp"
+#include "core/image_file.hpp"
 #include "util/error.hpp"
 
 namespace convray::render {

@@ -1,5 +1,5 @@
 // The progress bar: what its line says, and that it stays silent when told to.
-#include "render/progress.hpp"
+#include "core/progress.hpp"
 
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>

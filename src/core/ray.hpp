@@ -2,7 +2,7 @@
 // Rays and what they hit: the vocabulary shared by the surface finders and the renderer.
 #include "util/math.hpp"
 
-namespace convray::implicit {
+namespace convray {
 
 // origin + t * direction; direction has unit length, so t is a distance.
 struct Ray {
@@ -20,4 +20,4 @@ struct SurfaceHit {
   Vec3 normal{0.0, 0.0, 1.0};
 };
 
-}  // namespace convray::implicit
+}  // namespace convray

@@ -1,6 +1,6 @@
 // Writing pictures: values read back through OpenImageIO itself, the sRGB curve computed here
 // from its definition, and no file left behind by a write that fails.
-#include "render/image_file.hpp"
+#include "core/image_file.hpp"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "render/image_file.hpp"
+#include "core/image_file.hpp"
 
 #include <zlib.h>
 
@@ -12,12 +12,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "render/image_plugin.hpp"
-#include "render/png_writer.hpp"
+#include "core/image_plugin.hpp"
+#include "core/png_writer.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
-namespace convray::render {
+namespace convray {
 
 namespace fs = std::filesystem;
 
@@ -56,7 +56,7 @@ ImageFormat image_format_for(const std::string& path) {
     throw InputError({path}, "the image name needs an extension to choose its format (" +
                                  std::string(kKnownFormats) + ")");
   }
-  // PNG is written here (render/png_writer.hpp); for any other extension OpenImageIO is asked
+  // PNG is written here (core/png_writer.hpp); for any other extension OpenImageIO is asked
   // for a writer, without touching the disk.
   if (extension != "png" && !image_plugin::can_write(path)) {
     throw InputError({path},
@@ -159,4 +159,4 @@ void write_image_atomically(const std::string& path, const ImagePixels& pixels) 
                         "the image");
 }
 
-}  // namespace convray::render
+}  // namespace convray

@@ -1,14 +1,17 @@
 #pragma once
-// Thresholds of convolution surfaces F = T.
+// Thresholds of convolution surfaces F = T: the field of a flat region, a line or a point at
+// a given distance, under each kernel.
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "field/cauchy.hpp"
+#include "field/kernel.hpp"
 #include "util/math.hpp"
 
-namespace convray::implicit {
+namespace convray::field {
 
 // The threshold that puts the surface of a flat region at distance `offset` from its
 // triangles: the infinite plane's field s (π/3) R^2 (1 - d^2/R^2)^3 at d = offset, that is
@@ -17,6 +20,16 @@ inline double threshold_for_offset(double strength, double radius, double offset
   const double r2 = radius * radius;
   const double k = r2 - offset * offset;
   return strength * (kPi / 3.0) * k * k * k / (r2 * r2);
+}
+
+// The same under `kernel`: the quartic's above, or the Cauchy kernel's infinite plane
+// (cauchy.hpp). Needs 0 <= offset < radius for the quartic.
+inline double plane_threshold(const Kernel& kernel, double strength, double radius, double offset) {
+  switch (kernel.type) {
+    case KernelType::cauchy: return strength * cauchy_plane_value(offset, kernel.sharpness);
+    case KernelType::quartic: break;
+  }
+  return threshold_for_offset(strength, radius, offset);
 }
 
 // The threshold that puts the surface around a lone straight segment, far from its ends, at
@@ -74,4 +87,4 @@ inline double resolve_threshold(double strength, double radius, std::optional<do
   return threshold_for_offset(strength, radius, d);
 }
 
-}  // namespace convray::implicit
+}  // namespace convray::field

@@ -3,7 +3,7 @@
 // `--stats` can say where the time goes without slowing the tracer down.
 #include <cstdint>
 
-namespace convray::implicit {
+namespace convray {
 
 struct TraceStats {
   uint64_t rays = 0;               // surface queries (camera and shadow rays)
@@ -28,4 +28,4 @@ struct TraceStats {
   }
 };
 
-}  // namespace convray::implicit
+}  // namespace convray

@@ -1,15 +1,14 @@
-#include "geometry/bounds.hpp"
+#include "core/box.hpp"
 
 #include <algorithm>
 
-namespace convray::geometry {
+namespace convray {
 
-Box3 transform_box(const scene::Transform& transform, const Box3& box) {
+Box3 transform_box(const Mat4& m, const Box3& box) {
   if (is_empty(box)) return box;
-  if (transform.is_identity()) return box;
+  if (m == Mat4(1.0)) return box;
   // Arvo's method: each output coordinate is a sum of independent terms m_ij * x_j, each
   // extreme at one end of [lo_j, hi_j].
-  const glm::dmat4& m = transform.forward();
   Box3 out;
   for (int i = 0; i < 3; ++i) {
     double lo = m[3][i], hi = m[3][i];
@@ -26,4 +25,4 @@ Box3 transform_box(const scene::Transform& transform, const Box3& box) {
   return out;
 }
 
-}  // namespace convray::geometry
+}  // namespace convray

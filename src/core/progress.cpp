@@ -1,4 +1,4 @@
-#include "render/progress.hpp"
+#include "core/progress.hpp"
 
 #include <unistd.h>
 
@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <ostream>
 
-namespace convray::render {
+namespace convray {
 
 namespace {
 
@@ -89,4 +89,4 @@ void Progress::draw(uint64_t done) {
   line_open_ = true;
 }
 
-}  // namespace convray::render
+}  // namespace convray

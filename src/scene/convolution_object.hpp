@@ -10,11 +10,12 @@
 #include <vector>
 
 #include "field/arc.hpp"
+#include "field/kernel.hpp"
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
 #include "util/math.hpp"
 
-namespace convray::implicit {
+namespace convray::scene {
 
 // The kinds of component, in the order scene::Implicit lists them.
 enum class ComponentKind { mesh, segment, arc, point, blob_sphere, blob_cylinder };
@@ -32,7 +33,7 @@ struct Weight {
 
 // Where a mesh component's triangles came from: a file's triangles as loaded, shared by every
 // component (and every animation frame) that places the same file, and the placement. It lets
-// a SupportCache recognise a mesh it has prepared before (support_cache.hpp).
+// an implicit::SupportCache recognise a mesh it has prepared before (implicit/support_cache.hpp).
 struct MeshSource {
   std::shared_ptr<const std::vector<field::Triangle>> local;  // the file's triangles
   Mat4 placement{1.0};  // local -> object space: triangles[i] = placement(local[i])
@@ -66,17 +67,6 @@ struct BlobCylinderComponent {
   Weight weight;
 };
 
-// The kernel the skeleton is convolved with. quartic: the paper's (1 - r^2/R^2)^2 with finite
-// support R (ConvolutionSurface). cauchy: McCormack and Sherstyuk's 1 / (1 + s^2 r^2)^2, each
-// primitive's field cut to zero outside its bounding box grown by its radius, which then is
-// the truncation margin (CauchySurface, implicit/cauchy_surface.hpp).
-enum class KernelType { quartic, cauchy };
-struct Kernel {
-  KernelType type = KernelType::quartic;
-  double sharpness = 1.0;  // cauchy: s (> 0); the kernel falls to 1/4 at r = 1/s
-  bool operator==(const Kernel&) const = default;
-};
-
 struct ConvolutionObject {
   std::vector<MeshComponent> meshes;
   std::vector<SegmentComponent> segments;
@@ -85,7 +75,7 @@ struct ConvolutionObject {
   std::vector<BlobSphereComponent> blob_spheres;
   std::vector<BlobCylinderComponent> blob_cylinders;
   double threshold = 1.0;  // the surface is F = T; inside is F >= T
-  Kernel kernel;
+  field::Kernel kernel;  // the quartic or the Cauchy kernel
 };
 
-}  // namespace convray::implicit
+}  // namespace convray::scene

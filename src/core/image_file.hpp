@@ -1,9 +1,9 @@
 #pragma once
 // Writing pictures, the format chosen by the file name's extension:
 //
-//   .png           8 bits per channel, sRGB-encoded, by libpng (render/png_writer.hpp)
+//   .png           8 bits per channel, sRGB-encoded, by libpng (core/png_writer.hpp)
 //   any other format OpenImageIO writes, through a plugin loaded on first use
-//   (render/image_plugin.hpp), so that a PNG render never loads OpenImageIO:
+//   (core/image_plugin.hpp), so that a PNG render never loads OpenImageIO:
 //   .jpg .ppm .bmp .tga ...  8 bits per channel, sRGB-encoded
 //   .tif .tiff     16 bits per channel, sRGB-encoded
 //   .exr .hdr      32-bit float (.hdr: RGBE), linear: the renderer's values untouched
@@ -19,7 +19,7 @@
 #include <span>
 #include <string>
 
-namespace convray::render {
+namespace convray {
 
 enum class PixelEncoding {
   linear,   // linear light: sRGB-encoded for integer formats
@@ -60,4 +60,4 @@ bool image_file_is_complete(const std::string& path, int width, int height);
 // The sRGB transfer curve, for linear values clamped to [0, 1].
 float encode_srgb(float linear);
 
-}  // namespace convray::render
+}  // namespace convray

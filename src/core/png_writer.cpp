@@ -1,4 +1,4 @@
-#include "render/png_writer.hpp"
+#include "core/png_writer.hpp"
 
 #include <png.h>
 
@@ -9,7 +9,7 @@
 
 #include "util/error.hpp"
 
-namespace convray::render {
+namespace convray {
 
 uint8_t quantize_8bit(float value) {
   const float scaled = value * 255.0f;  // in float, as OpenImageIO computes it
@@ -100,4 +100,4 @@ std::vector<unsigned char> encode_png(const std::string& path, const ImagePixels
   return bytes;
 }
 
-}  // namespace convray::render
+}  // namespace convray

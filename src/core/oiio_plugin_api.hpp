@@ -3,7 +3,7 @@
 // convray does with OpenImageIO (src/oiio_plugin/). OpenImageIO pulls in some 250 shared
 // libraries (OpenCV, GDAL, ffmpeg, ...) whose loading cost every process a fifth of a second
 // before main(); behind a plugin that cost is paid only by the runs that write or check a
-// picture in a format other than PNG (render/image_plugin.cpp loads it on first use).
+// picture in a format other than PNG (core/image_plugin.cpp loads it on first use).
 //
 // Plain C types, and no exception crosses it: the plugin catches them and reports failures
 // by return value and message. Both sides are built from this header, and a plugin from

@@ -1,6 +1,6 @@
 #pragma once
 // PNG, every render's default format, encoded by libpng directly: writing a PNG needs none of
-// the image libraries behind the other formats (render/image_plugin.hpp), so a render starts
+// the image libraries behind the other formats (core/image_plugin.hpp), so a render starts
 // without loading them.
 //
 // What is stored is what convray wrote through OpenImageIO before (tests/render/
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "render/image_file.hpp"
+#include "core/image_file.hpp"
 
-namespace convray::render {
+namespace convray {
 
 // A value in [0, 1] as an 8-bit level: round(v * 255), halves away from zero, with v * 255
 // computed in float; below 0 and NaN give 0, above 1 gives 255. This is OpenImageIO's rule
@@ -25,4 +25,4 @@ uint8_t quantize_8bit(float value);
 // libpng reports an error; `path` only names the file in that message.
 std::vector<unsigned char> encode_png(const std::string& path, const ImagePixels& pixels);
 
-}  // namespace convray::render
+}  // namespace convray

@@ -1,14 +1,14 @@
-#include "render/image_plugin.hpp"
+#include "core/image_plugin.hpp"
 
 #include <dlfcn.h>
 
 #include <filesystem>
 #include <system_error>
 
-#include "render/oiio_plugin_api.hpp"
+#include "core/oiio_plugin_api.hpp"
 #include "util/error.hpp"
 
-namespace convray::render::image_plugin {
+namespace convray::image_plugin {
 
 namespace fs = std::filesystem;
 
@@ -87,4 +87,4 @@ bool reads_whole(const std::string& path, int width, int height) {
   return plugin_for(path).reads_whole(path.c_str(), width, height) != 0;
 }
 
-}  // namespace convray::render::image_plugin
+}  // namespace convray::image_plugin

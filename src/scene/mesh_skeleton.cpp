@@ -1,6 +1,6 @@
-#include "implicit/mesh_skeleton.hpp"
+#include "scene/mesh_skeleton.hpp"
 
-namespace convray::implicit {
+namespace convray::scene {
 
 MeshSkeleton skeleton_of(const mesh::LoadedMesh& mesh) {
   const std::vector<Vec3>& v = mesh.soup.vertices;
@@ -22,4 +22,4 @@ void add_skeleton(MeshSkeleton skeleton, const Weight& weight, ConvolutionObject
   for (const Vec3& p : skeleton.points) object.points.push_back({p, weight});
 }
 
-}  // namespace convray::implicit
+}  // namespace convray::scene

@@ -14,7 +14,7 @@
 #include <mutex>
 #include <string>
 
-namespace convray::render {
+namespace convray {
 
 class Progress {
  public:
@@ -55,4 +55,4 @@ std::string format_progress(const std::string& label, uint64_t done, uint64_t to
 // "m:ss", or "h:mm:ss" from an hour on.
 std::string format_duration(double seconds);
 
-}  // namespace convray::render
+}  // namespace convray
