@@ -16,6 +16,7 @@
 #include "app/command_step.hpp"
 #include "app/declared_object.hpp"
 #include "app/image_reader.hpp"
+#include "render/function_sources.hpp"
 #include "app/object_queries.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/placed_field.hpp"
@@ -146,6 +147,7 @@ int run_scene_field(const FieldOptions& o, std::istream& in, std::ostream& out, 
   parse_options.read_folders = o.read_folders;
   parse_options.object_queries = geometry_object_queries();
   parse_options.image_reader = plugin_image_reader();
+  parse_options.color_sources = render::renderer_color_sources();
   const sdl::ParseResult parsed = sdl::parse_file(o.scene_path, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.scene_path, o.object_name);
   const scene::ConvolutionObject& record = std::get<scene::Implicit>(object.shape).object;

@@ -16,6 +16,7 @@
 #include "app/command_step.hpp"
 #include "app/frame_names.hpp"
 #include "app/image_reader.hpp"
+#include "render/function_sources.hpp"
 #include "app/object_queries.hpp"
 #include "app/size_check.hpp"
 #include "app/video.hpp"
@@ -64,6 +65,7 @@ sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame,
   p.declares = o.declares;
   p.object_queries = geometry_object_queries();
   p.image_reader = plugin_image_reader();
+  p.color_sources = render::renderer_color_sources();
   return p;
 }
 

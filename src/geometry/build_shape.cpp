@@ -14,6 +14,7 @@
 #include "geometry/polygon.hpp"
 #include "geometry/sor.hpp"
 #include "geometry/implicit_shape.hpp"
+#include "geometry/isosurface.hpp"
 #include "geometry/lathe.hpp"
 #include "geometry/modifiers.hpp"
 #include "geometry/plane.hpp"
@@ -77,6 +78,9 @@ class ShapeBuilder {
   }
   ShapePtr make(const scene::Lathe& l, const Inherited& own) const {
     return std::make_unique<LatheShape>(l.pieces, surface_for(own));
+  }
+  ShapePtr make(const scene::Isosurface& i, const Inherited& own) const {
+    return std::make_unique<IsosurfaceShape>(i, surface_for(own));
   }
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
   ShapePtr make(const scene::HeightField& h, const Inherited& own) const {

@@ -159,6 +159,8 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
       return brick_block(q, space.brick_size, space.mortar);
     case Pattern::hexagon:
       return hexagon_block(q);
+    case Pattern::function:
+      return (*space.function)(q.x, q.y, q.z);
   }
   return 0.0;
 }

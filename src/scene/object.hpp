@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/convolution_object.hpp"
+#include "scene/function.hpp"
 #include "scene/texture.hpp"
 #include "scene/transform.hpp"
 #include "util/error.hpp"
@@ -136,6 +137,20 @@ struct Superellipsoid {
   double e = 1.0, n = 1.0;
 };
 
+// POV-Ray's `isosurface`: inside where function(x, y, z) < threshold within the container (a
+// box, or a sphere); the surface is function = threshold (geometry/isosurface.hpp).
+struct Isosurface {
+  std::shared_ptr<const Function> function;
+  double threshold = 0.0;
+  double max_gradient = 1.1;  // POV-Ray's defaults
+  double accuracy = 0.001;
+  bool open = false;          // the container's surface is not drawn
+  bool sphere_container = false;
+  Vec3 box_lo{-1.0}, box_hi{1.0};  // the default container, box { -1, 1 }
+  Vec3 center{0.0};
+  double radius = 1.0;
+};
+
 // One piece of a spline: the polynomial point(s) = c[0] + c[1] s + c[2] s^2 + c[3] s^3 for
 // s in [0, 1] (linear and quadratic pieces have zero high coefficients).
 struct SplinePiece {
@@ -171,7 +186,7 @@ struct Csg {
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
                            Implicit, Csg, Polynomial, Text, Prism, Superellipsoid,
-                           Lathe, Polygon, HeightField, Sor>;
+                           Lathe, Polygon, HeightField, Sor, Isosurface>;
 
 // A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
 // empty stand-in, so that include files declaring such objects still work; placing it in the

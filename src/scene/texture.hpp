@@ -11,6 +11,7 @@
 
 #include "scene/color.hpp"
 #include "scene/image_map.hpp"
+#include "scene/function.hpp"
 #include "scene/transform.hpp"
 
 namespace convray::scene {
@@ -43,6 +44,7 @@ enum class Pattern {
   image_map,    // pigments only: a picture's colours (Pigment::image_map)
   brick,        // block pattern: mortar (block 0) and bricks (block 1) in courses along y
   hexagon,      // block pattern: hexagons in the x-z plane, blocks 0, 1 and 2
+  function,     // a user function of x, y, z (PatternSpace::function), wrapped like gradient
 };
 
 // A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
@@ -76,6 +78,7 @@ struct PatternSpace {
   double mortar = 0.5;                // brick only: the mortar's width
   double agate_turb = 1.0;            // agate only: the weight of its turbulence
   int noise_generator = 2;            // POV-Ray's noise generator: 1 original, 2 range-corrected
+  std::shared_ptr<const Function> function;  // function only
   Turbulence turbulence;
   double frequency = 1.0;  // value -> fract(value * frequency + phase)
   double phase = 0.0;

@@ -330,21 +330,6 @@ Value Parser::Impl::parse_keyword() {
     vector.v[size_t(index)] = 1.0;
     return constant(make_value(vector));
   };
-  switch (t.word) {
-    case Word::x:
-    case Word::y:
-    case Word::z:
-    case Word::t:
-    case Word::u:
-    case Word::v:
-      // Inside a function body these name its parameters.
-      if (function_depth > 0) {
-        if (const Value* parameter = lookup(t.view())) return constant(*parameter);
-      }
-      break;
-    default:
-      break;
-  }
   // Colour keywords and component modifiers (colors.cpp knows which they are).
   if (is_color_keyword(t)) return parse_color_group();
   switch (t.word) {
@@ -397,7 +382,7 @@ Value Parser::Impl::parse_keyword() {
     case Word::input_file_name:
       return constant(make_value(files.front()->name));
     case Word::internal:
-      fail(at, "internal functions (functions.inc) are not supported");
+      fail(at, "'internal' can only be the body of a function: function { internal(N) }");
     case Word::array:
       fail(at, "an array can only be declared: #declare Name = array[N]");
     case Word::function:

@@ -49,6 +49,7 @@ scene::ObjectPtr parse_torus(Parser& parser);
 scene::ObjectPtr parse_text(Parser& parser);
 scene::ObjectPtr parse_prism(Parser& parser);
 scene::ObjectPtr parse_superellipsoid(Parser& parser);
+scene::ObjectPtr parse_isosurface(Parser& parser);
 scene::ObjectPtr parse_lathe(Parser& parser);
 scene::ObjectPtr parse_polygon(Parser& parser);
 scene::ObjectPtr parse_sor(Parser& parser);

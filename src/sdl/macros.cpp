@@ -8,10 +8,11 @@
 // is passed by value. A parameter marked `optional` may be left out; it is then not declared
 // in the body (test it with #ifdef).
 //
-// `#declare F = function (a, b) { expression }` keeps the body's tokens the same way; a call
-// F(1, 2) evaluates the expression in a sealed frame (the expression may not run past the
-// closing brace) with a and b bound. Without a parameter list the parameters are x, y, z.
+// `#declare F = function (a, b) { expression }` is compiled where it is declared
+// (function_compiler.cpp); a call F(1, 2) evaluates the compiled function. Without a parameter
+// list the parameters are x, y, z.
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -195,9 +196,11 @@ std::uint32_t Parser::Impl::find_closing_brace(std::uint32_t opened_at) {
 }
 
 void Parser::Impl::declare_function(const std::string& name) {
+  const TokenRef at = ref();
   advance();  // function
   auto function = std::make_shared<UserFunction>();
   function->name = name;
+  function->loc = loc(at);
   if (plain_symbol('(')) {
     advance();
     while (!plain_symbol(')')) {
@@ -215,6 +218,10 @@ void Parser::Impl::declare_function(const std::string& name) {
       }
     }
     advance();
+    if (function->parameters.size() > scene::Function::kMaxParameters) {
+      fail(at, "function '" + name + "' has more than " +
+                   std::to_string(scene::Function::kMaxParameters) + " parameters");
+    }
   } else {
     function->parameters = {"x", "y", "z"};
   }
@@ -222,28 +229,60 @@ void Parser::Impl::declare_function(const std::string& name) {
     fail_here("expected '{' to start the body of function '" + name + "', found " +
               describe(plain()));
   }
-  Frame& frame = frames.back();
-  const std::uint32_t open = frame.pos;
-  const std::uint32_t close = find_closing_brace(open);
-  function->file = frame.file;
-  function->body_begin = open + 1;
-  function->body_end = close;
-  frame.pos = close + 1;
-  moved();
+  compile_function_body(*function);
   scopes.front().values.erase(name);
   macros.erase(name);
   functions[name] = std::move(function);
 }
 
+// At the body's '{': compiled inside a frame of its own, so that the expression cannot run past
+// the closing brace. A body that needs what convray cannot evaluate yet (functions.inc declares
+// pattern and pigment functions) is read past; calling the function fails with it.
+void Parser::Impl::compile_function_body(UserFunction& function) {
+  Frame& outer = frames.back();
+  const std::uint32_t open = outer.pos;
+  const std::uint32_t close = find_closing_brace(open);
+  const SourceFile* file = outer.file;
+  const std::size_t depth = frames.size();
+  outer.pos = close + 1;
+  moved();
+  Frame& frame = push_frame(Frame::Kind::function, file, open + 1, close);
+  frame.name = function.name;
+  const int blocks_open = open_blocks;
+  try {
+    compile_function(function);
+    if (plain().kind != LexKind::end || frames.size() != depth + 1) {
+      fail_here("expected the end of the body of function '" + function.name + "', found " +
+                describe(plain()));
+    }
+  } catch (const UnsupportedError& error) {
+    open_blocks = blocks_open;  // the item parsers' braces left open by the error
+    function.compiled = nullptr;
+    function.color_source = nullptr;
+    function.unsupported = UnsupportedItem{error.feature(), error.loc()};
+  }
+  frames.resize(depth);
+  moved();
+}
+
 Value Parser::Impl::call_function(const UserFunction& function, TokenRef at) {
+  if (function.unsupported) {
+    fail_unsupported(loc(at), function.unsupported->feature + " (at " +
+                                  function.unsupported->feature_at.str() + "): " +
+                                  quoted(function.name) + ", declared at " +
+                                  function.loc.str() + ", needs it",
+                     function.unsupported->feature);
+  }
   const std::size_t wanted = function.parameters.size();
   expect_symbol('(', "after the function name '" + function.name + "'");
-  std::vector<Value> arguments;
+  std::vector<double> arguments;
   {
     ScopedValue not_in_vector(angle_depth, 0);
     if (!accept_symbol(')')) {
       for (;;) {
-        arguments.push_back(parse_expression());
+        const TokenRef argument_at = ref();
+        arguments.push_back(
+            to_float(parse_expression(), argument_at, "as an argument of a function"));
         if (accept_symbol(',')) continue;
         expect_symbol(')', "after the arguments of function '" + function.name + "'");
         break;
@@ -254,26 +293,20 @@ Value Parser::Impl::call_function(const UserFunction& function, TokenRef at) {
     fail(at, "function '" + function.name + "' takes " + std::to_string(wanted) + " argument" +
                  (wanted == 1 ? "" : "s") + ", found " + std::to_string(arguments.size()));
   }
-  NestingLevel level(*this);
-  const std::uint64_t scope = push_scope();
-  for (std::size_t i = 0; i < wanted; ++i) {
-    scopes.back().values.insert_or_assign(function.parameters[i], std::move(arguments[i]));
+  if (function.color_source) {
+    const scene::Color color =
+        function.color_source->at(Vec3(arguments[0], arguments[1], arguments[2]));
+    Vector vector;
+    vector.size = 5;
+    vector.color = true;
+    vector.v = {color.rgb.r, color.rgb.g, color.rgb.b, color.filter, color.transmit};
+    return make_value(vector);
   }
-  const std::size_t depth = frames.size();
-  Frame& frame =
-      push_frame(Frame::Kind::function, function.file, function.body_begin, function.body_end);
-  frame.name = function.name;
-  ++function_depth;
-  Value result = parse_expression();
-  if (plain().kind != LexKind::end || frames.size() != depth + 1) {
-    fail_here("expected the end of the body of function '" + function.name + "', found " +
-              describe(plain()));
+  const double result = function.compiled->evaluate(arguments);
+  if (!std::isfinite(result)) {
+    math_error(at, "function '" + function.name + "' gives a result that is not finite");
   }
-  --function_depth;
-  frames.pop_back();
-  moved();
-  pop_scope(scope);
-  return result;
+  return make_value(result);
 }
 
 }  // namespace convray::sdl

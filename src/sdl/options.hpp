@@ -6,6 +6,10 @@
 #include <utility>
 #include <vector>
 
+namespace convray::scene {
+class ColorSources;  // scene/color_sources.hpp
+}  // namespace convray::scene
+
 namespace convray::sdl {
 
 class MeshLibrary;
@@ -45,6 +49,9 @@ struct ParseOptions {
   // min_extent, max_extent and trace() ask the objects' geometry (sdl/object_queries.hpp);
   // without an implementation they are errors.
   std::shared_ptr<const ObjectQueries> object_queries;
+  // Pigment, pattern and noise functions ask the renderer (scene/color_sources.hpp); null:
+  // such functions are unsupported where called.
+  std::shared_ptr<const scene::ColorSources> color_sources;
   // image_map reads its picture through this (sdl/image_reader.hpp); without one, an
   // image_map is an error.
   std::shared_ptr<const ImageReader> image_reader;

@@ -42,6 +42,7 @@ constexpr ShapeKeyword kShapes[] = {
     {"polygon", parse_polygon},
     {"sor", parse_sor},
     {"height_field", parse_height_field},
+    {"isosurface", parse_isosurface},
     {"poly", parse_polynomial},
     {"cubic", parse_polynomial},
     {"quartic", parse_polynomial},
@@ -54,7 +55,7 @@ constexpr std::string_view kObjectWords[] = {
     "disc",         "triangle",   "smooth_triangle", "mesh",     "mesh2",       "union",
     "intersection", "difference", "merge",           "blob",     "convolution", "object",
     "poly",         "cubic",      "quartic",         "quadric",  "text", "prism",
-    "superellipsoid", "lathe"};
+    "superellipsoid", "lathe", "isosurface"};
 
 // The declared object named by the next token (consumed), or null when it names none.
 scene::ObjectPtr declared_object(Parser& parser) {
@@ -109,7 +110,7 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 }
 
 constexpr std::string_view kUnsupportedObjects[] = {
-    "polynomial", "isosurface",    "parametric",    "julia_fractal", "bicubic_patch",
+    "polynomial", "parametric",    "julia_fractal", "bicubic_patch",
     "sphere_sweep",  "ovus",          "lemon"};
 
 }  // namespace

@@ -74,6 +74,9 @@ class Parser {
   // The value of an identifier that is declared, if the next token is one (not consumed):
   // item parsers use it for `texture { T_Stone }`, `object { Thing }`, `pigment { P }`.
   const Value* peek_declared();
+  // At `function { body }` (isosurfaces, function patterns): the body compiled as a function
+  // of x, y and z (function_compiler.cpp). What convray cannot evaluate yet fails here.
+  std::shared_ptr<const scene::Function> parse_function_block();
 
   // --- Context.
   const ParseOptions& options() const;

@@ -31,6 +31,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "scene/color_sources.hpp"
+#include "scene/function.hpp"
 #include "sdl/lexer.hpp"
 #include "sdl/parser.hpp"
 #include "util/read_permissions.hpp"
@@ -113,13 +115,18 @@ struct Macro {
   SourceLoc loc;
 };
 
-// `#declare F = function (a, b) { expression }`: evaluated when called, like a macro whose
-// body must be one float expression.
+// `#declare F = function (a, b) { expression }`: compiled where it is declared, evaluated
+// wherever it is called (expressions, patterns, isosurfaces).
 struct UserFunction {
   std::string name;
-  const SourceFile* file = nullptr;
-  std::uint32_t body_begin = 0, body_end = 0;  // body_end: the closing '}'
+  SourceLoc loc;  // of the declaration
   std::vector<std::string> parameters;
+  // Compiled when declared (function_compiler.cpp); null when the body needs what convray
+  // cannot evaluate yet, which is then `unsupported` (a call fails with it).
+  std::shared_ptr<const scene::Function> compiled;
+  // `function { pigment { P } }`: a colour at (x, y, z) instead (compiled is null).
+  std::shared_ptr<const scene::ColorSource> color_source;
+  std::optional<UnsupportedItem> unsupported;
 };
 
 struct Deprecation {
@@ -162,7 +169,7 @@ struct Parser::Impl {
   long long last_texture_end = -1;
   // That texture's (or unusable item's) value, if no token was read since it was declared.
   Value* texture_declared_just_before();  // braces items::Block opened and has not closed (deferred_unsupported)
-  int macro_depth = 0, include_depth = 0, function_depth = 0;
+  int macro_depth = 0, include_depth = 0;
   int quiet_math = 0;   // > 0: math errors in a branch whose value is discarded
   int angle_depth = 0;
   int less_starts_vector = 0;  // > 0: a '<' ends the float (parse_float_before_points)  // > 0: directly inside < >, where '>' ends the vector
@@ -282,6 +289,12 @@ struct Parser::Impl {
   bool reference_argument_ahead() const;
   void declare_function(const std::string& name);
   Value call_function(const UserFunction& function, TokenRef at);
+  // --- function_compiler.cpp: the body, at its first token, into function.compiled.
+  void compile_function_body(UserFunction& function);
+  void compile_function(UserFunction& function);
+  void compile_internal(UserFunction& function);
+  const scene::ColorSources& color_sources(TokenRef at);
+  void compile_color_function(UserFunction& function);
   std::uint32_t find_closing_brace(std::uint32_t opened_at);
 
   // --- expressions.cpp

@@ -37,7 +37,7 @@ constexpr std::string_view kPatternNames[] = {
 // "unexpected".
 constexpr std::string_view kUnsupportedPatterns[] = {
     "crackle",      "cells",         "spiral2",
-    "julia",        "bump_map",      "function",    "pigment_pattern",
+    "julia",        "bump_map",      "pigment_pattern",
     "object",     "density_file", "quilted",      "facets",
     "average",      "tiling",        "pavement",    "square",
     "triangular", "slope",        "aoi",          "image_pattern", "magnet",
@@ -59,6 +59,11 @@ Keywords unsupported_pattern_words() { return kUnsupportedPatterns; }
 std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::PatternSpace& space) {
   if (at_any_word(parser, kUnsupportedPatterns)) {
     parser.fail_unsupported_here("'" + parser.peek().text + "' is not supported yet by convray");
+  }
+  if (at_word(parser, "function")) {
+    space.pattern = scene::Pattern::function;
+    space.function = parser.parse_function_block();
+    return space.pattern;
   }
   for (const PatternKeyword& keyword : kPatterns) {
     if (!at_word(parser, keyword.word)) continue;

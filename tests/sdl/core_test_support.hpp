@@ -10,12 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "program_options.hpp"
 #include "sdl/parser.hpp"
 
 namespace convray::sdl::core_testing {
 
 // The value of one expression, after any directives before it; the whole text must be used.
-inline Value eval(const std::string& text, const ParseOptions& options = {}) {
+inline Value eval(const std::string& text, const ParseOptions& options = program_options()) {
   Parser parser("test.pov", text, options);
   Value value = parser.parse_expression();
   EXPECT_EQ(parser.peek().kind, Token::Kind::end)
@@ -23,7 +24,7 @@ inline Value eval(const std::string& text, const ParseOptions& options = {}) {
   return value;
 }
 
-inline double eval_float(const std::string& text, const ParseOptions& options = {}) {
+inline double eval_float(const std::string& text, const ParseOptions& options = program_options()) {
   const Value value = eval(text, options);
   EXPECT_NE(value.get<double>(), nullptr) << text << " gave " << type_name(value);
   return value.get<double>() ? *value.get<double>() : -12345.0;
@@ -42,7 +43,7 @@ inline std::string eval_string(const std::string& text) {
 }
 
 // The globals and warnings of a scene of directives (and items).
-inline ParseResult run(const std::string& text, const ParseOptions& options = {}) {
+inline ParseResult run(const std::string& text, const ParseOptions& options = program_options()) {
   return parse_string(text, "test.pov", options);
 }
 
@@ -68,7 +69,7 @@ inline std::string global_string(const ParseResult& result, const std::string& n
 
 // The float a scene of directives declares as `name`.
 inline double declared(const std::string& text, const std::string& name,
-                       const ParseOptions& options = {}) {
+                       const ParseOptions& options = program_options()) {
   return global_float(run(text, options), name);
 }
 
@@ -84,7 +85,7 @@ inline Failure to_failure(const InputError& error) {
   return {error.loc(), message, message.substr(0, message.find('\n'))};
 }
 
-inline Failure scene_error(const std::string& text, const ParseOptions& options = {}) {
+inline Failure scene_error(const std::string& text, const ParseOptions& options = program_options()) {
   try {
     run(text, options);
   } catch (const InputError& error) {
@@ -96,7 +97,7 @@ inline Failure scene_error(const std::string& text, const ParseOptions& options 
 
 inline Failure expression_error(const std::string& text) {
   try {
-    Parser parser("test.pov", text, {});
+    Parser parser("test.pov", text, program_options());
     parser.parse_expression();
   } catch (const InputError& error) {
     return to_failure(error);

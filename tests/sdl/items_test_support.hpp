@@ -6,11 +6,12 @@
 #include <string>
 #include <variant>
 
+#include "program_options.hpp"
 #include "sdl/parser.hpp"
 
 namespace convray::sdl::testing {
 
-inline ParseResult parse(const std::string& text, const ParseOptions& options = {}) {
+inline ParseResult parse(const std::string& text, const ParseOptions& options = program_options()) {
   return parse_string(text, "test.pov", options);
 }
 
@@ -28,7 +29,7 @@ struct ParseFailure {
   std::string message;
 };
 
-inline ParseFailure parse_error(const std::string& text, const ParseOptions& options = {}) {
+inline ParseFailure parse_error(const std::string& text, const ParseOptions& options = program_options()) {
   try {
     parse(text, options);
   } catch (const InputError& error) {

@@ -178,7 +178,8 @@ TEST(Functions, UserFunctions) {
             "function 'F' takes 1 argument, found 2");
   EXPECT_EQ(
       core_testing::expression_error("#declare F = function { internal(3) } F(1, 2, 3)").first_line,
-      "internal functions (functions.inc) are not supported");
+      "internal function 3 ('F') is not supported yet by convray (at test.pov:1:25): 'F', "
+      "declared at test.pov:1:14, needs it");
 }
 
 }  // namespace

@@ -1,0 +1,44 @@
+#pragma once
+// POV-Ray's `isosurface { function { f } contained_by { box | sphere } threshold T
+// max_gradient G accuracy A open }`: within the container, inside where f < T; the surface is
+// f = T, and, unless `open`, the container's own surface where f < T there.
+//
+// Along a ray, g(t) = f(ray.at(t)) - T changes by at most G per unit of t (G is the scene's
+// promise, as in POV-Ray: too small a G can step over thin parts). From a point where
+// |g| = v no root lies closer than v / G, so the march steps by max(v / G, A) and every sign
+// change is refined by the tracers' bracketed refiner (implicit/bracket_refine.hpp).
+#include <memory>
+
+#include "geometry/primitive.hpp"
+#include "scene/object.hpp"
+
+namespace convray::geometry {
+
+class IsosurfaceShape final : public Shape {
+ public:
+  IsosurfaceShape(const scene::Isosurface& iso, SurfaceInfoPtr surface);
+
+  Box3 bounds() const override;
+  void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
+                 TraceStats& stats) const override;
+  std::optional<Crossing> first_crossing(const Ray& ray, double tmin, double tmax,
+                                         TraceStats& stats) const override;
+  bool inside(const Vec3& p) const override;
+
+  double value(const Vec3& p) const { return (*iso_.function)(p.x, p.y, p.z) - iso_.threshold; }
+  Vec3 outward_normal(const Vec3& p) const;  // f's gradient by central differences
+
+ private:
+  bool in_container(const Vec3& p) const;
+  bool clip_to_container(const Ray& ray, double& enter, double& leave) const;
+  Vec3 container_normal(const Vec3& p) const;
+  // The crossings in (tmin, tmax), ascending; stops after the first when `first_only`.
+  void march(const Ray& ray, double tmin, double tmax, bool first_only,
+             std::vector<Crossing>& out) const;
+
+  scene::Isosurface iso_;
+  double gradient_step_;  // for outward_normal
+  SurfaceInfoPtr surface_;
+};
+
+}  // namespace convray::geometry
