@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "core/bracket_refine.hpp"
 #include "field/triangle_batch.hpp"
 #include "implicit/bezier_clip.hpp"
-#include "implicit/bracket_refine.hpp"
 #include "implicit/interval_fit.hpp"
 #include "core/box.hpp"
 #include "implicit/sphere_sweep.hpp"
@@ -169,12 +169,12 @@ double RayTracer::exact_minus_threshold(const ExactSum& exact, double t) {
   return sum - s_.threshold;
 }
 
-// The exact field's root in a sign-changing bracket (bracket_refine.hpp).
+// The exact field's root in a sign-changing bracket (core/bracket_refine.hpp).
 double RayTracer::polish(const ExactSum& ids, double lo, double hi, double g_lo,
                          double g_hi) {
   ++stats_.roots;
-  return refine_bracket(lo, hi, g_lo, g_hi,
-                        [&](double t) { return exact_minus_threshold(ids, t); });
+  return core::refine_bracket(lo, hi, g_lo, g_hi,
+                              [&](double t) { return exact_minus_threshold(ids, t); });
 }
 
 // A region from the band isolation may hold a crossing (the exact field changes sign across
