@@ -10,6 +10,7 @@
 
 #include "app/command_step.hpp"
 #include "app/declared_object.hpp"
+#include "app/image_reader.hpp"
 #include "app/object_queries.hpp"
 #include "app/short_number.hpp"
 #include "app/size_check.hpp"
@@ -120,6 +121,7 @@ PreparedField prepare_scene(const PolygonizeOptions& o) {
   parse_options.library_paths = o.library_paths;
   parse_options.read_folders = o.read_folders;
   parse_options.object_queries = geometry_object_queries();
+  parse_options.image_reader = plugin_image_reader();
   const sdl::ParseResult parsed = sdl::parse_file(o.input, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.input, o.object_name);
   const scene::ConvolutionObject& convolution = std::get<scene::Implicit>(object.shape).object;

@@ -15,6 +15,7 @@
 
 #include "app/command_step.hpp"
 #include "app/frame_names.hpp"
+#include "app/image_reader.hpp"
 #include "app/object_queries.hpp"
 #include "app/size_check.hpp"
 #include "app/video.hpp"
@@ -62,6 +63,7 @@ sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame,
   p.read_anywhere = o.read_anywhere;
   p.declares = o.declares;
   p.object_queries = geometry_object_queries();
+  p.image_reader = plugin_image_reader();
   return p;
 }
 

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <system_error>
 
@@ -20,6 +21,7 @@ struct Plugin {
   ConvrayOiioCanWriteFn* can_write = nullptr;
   ConvrayOiioWriteFn* write = nullptr;
   ConvrayOiioReadsWholeFn* reads_whole = nullptr;
+  ConvrayOiioReadFn* read = nullptr;
   std::string problem;  // why it could not be loaded; empty once loaded
 };
 
@@ -52,8 +54,9 @@ Plugin load() {
   plugin.write = reinterpret_cast<ConvrayOiioWriteFn*>(::dlsym(handle, CONVRAY_OIIO_WRITE_SYMBOL));
   plugin.reads_whole =
       reinterpret_cast<ConvrayOiioReadsWholeFn*>(::dlsym(handle, CONVRAY_OIIO_READS_WHOLE_SYMBOL));
+  plugin.read = reinterpret_cast<ConvrayOiioReadFn*>(::dlsym(handle, CONVRAY_OIIO_READ_SYMBOL));
   if (!version || version() != CONVRAY_OIIO_PLUGIN_VERSION || !plugin.can_write || !plugin.write ||
-      !plugin.reads_whole) {
+      !plugin.reads_whole || !plugin.read) {
     plugin.problem = "formats other than .png need the plugin " + file.string() +
                      ", which is from another version of convray (rebuild it with convray)";
   }
@@ -85,6 +88,27 @@ void write(const std::string& format_path, const std::string& file, int width, i
 
 bool reads_whole(const std::string& path, int width, int height) {
   return plugin_for(path).reads_whole(path.c_str(), width, height) != 0;
+}
+
+ReadImage read(const std::string& path) {
+  char message[512] = "";
+  int width = 0, height = 0, linear = 0, bits = 8, grey = 0;
+  float* values = nullptr;
+  const int done = plugin_for(path).read(path.c_str(), &width, &height, &linear, &bits, &grey,
+                                         &values, message, sizeof message);
+  if (!done) {
+    const std::string reason = message[0] ? message : "the reader gave no reason";
+    throw InputError({path}, "cannot read the image: " + reason);
+  }
+  ReadImage image;
+  image.width = width;
+  image.height = height;
+  image.linear = linear != 0;
+  image.bits = bits;
+  image.grey = grey != 0;
+  image.rgba.assign(values, values + size_t(width) * size_t(height) * 4);
+  std::free(values);
+  return image;
 }
 
 }  // namespace convray::image_plugin

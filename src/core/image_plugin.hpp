@@ -6,6 +6,7 @@
 // Every function throws InputError("PATH: ...", naming the plugin's file and the loader's
 // reason) when the plugin cannot be loaded; `path` is the image the caller was working on.
 #include <string>
+#include <vector>
 
 namespace convray::image_plugin {
 
@@ -19,5 +20,18 @@ void write(const std::string& format_path, const std::string& file, int width, i
 
 // Whether `path` reads back whole as an image of this size (see ConvrayOiioReadsWholeFn).
 bool reads_whole(const std::string& path, int width, int height);
+
+// An image read for a scene: RGBA floats as the file stores them, rows top first.
+struct ReadImage {
+  int width = 0, height = 0;
+  bool linear = false;        // the file stores linear light (.exr, .hdr); else display-encoded
+  int bits = 8;               // of one stored channel
+  bool grey = false;          // one colour channel (repeated into red, green and blue)
+  std::vector<float> rgba;    // 4 per pixel
+};
+
+// Reads `path` (see ConvrayOiioReadFn); throws InputError({path}, "cannot read the image:
+// REASON") when it cannot be read.
+ReadImage read(const std::string& path);
 
 }  // namespace convray::image_plugin

@@ -10,7 +10,7 @@
 // another build is refused by its version.
 #include <cstddef>
 
-#define CONVRAY_OIIO_PLUGIN_VERSION 1
+#define CONVRAY_OIIO_PLUGIN_VERSION 2
 
 extern "C" {
 
@@ -34,6 +34,16 @@ using ConvrayOiioWriteFn = int(const char* format_path, const char* file, int wi
 // back without error, else 0. Prints nothing.
 using ConvrayOiioReadsWholeFn = int(const char* path, int width, int height);
 
+// Reads the image `path` (a scene's image_map) as 4 floats per pixel, rows top first: red,
+// green, blue and alpha (grey images repeated into red, green and blue; alpha 1 where the
+// file has none). `*values` is allocated with malloc; the caller frees it with free().
+// `*linear` is 1 when the file stores linear light (floating-point formats such as .exr and
+// .hdr), 0 when its values are display-encoded (8 and 16 bit formats); `*bits` the bits of one
+// stored channel (8, 16, 32 ...); `*grey` 1 when the file has one colour channel. Returns 1,
+// or 0 with the reason in `message`.
+using ConvrayOiioReadFn = int(const char* path, int* width, int* height, int* linear, int* bits,
+                              int* grey, float** values, char* message, size_t message_size);
+
 }  // extern "C"
 
 // The exported names, for dlsym.
@@ -41,3 +51,4 @@ using ConvrayOiioReadsWholeFn = int(const char* path, int width, int height);
 #define CONVRAY_OIIO_CAN_WRITE_SYMBOL "convray_oiio_can_write"
 #define CONVRAY_OIIO_WRITE_SYMBOL "convray_oiio_write"
 #define CONVRAY_OIIO_READS_WHOLE_SYMBOL "convray_oiio_reads_whole"
+#define CONVRAY_OIIO_READ_SYMBOL "convray_oiio_read"

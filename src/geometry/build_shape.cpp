@@ -10,6 +10,9 @@
 #include "geometry/cone.hpp"
 #include "geometry/csg.hpp"
 #include "geometry/disc.hpp"
+#include "geometry/height_field.hpp"
+#include "geometry/polygon.hpp"
+#include "geometry/sor.hpp"
 #include "geometry/implicit_shape.hpp"
 #include "geometry/lathe.hpp"
 #include "geometry/modifiers.hpp"
@@ -76,6 +79,15 @@ class ShapeBuilder {
     return std::make_unique<LatheShape>(l.pieces, surface_for(own));
   }
   ShapePtr make(const scene::Disc& d, const Inherited& own) const;
+  ShapePtr make(const scene::HeightField& h, const Inherited& own) const {
+    return std::make_unique<HeightFieldShape>(h, surface_for(own));
+  }
+  ShapePtr make(const scene::Sor& s, const Inherited& own) const {
+    return std::make_unique<SorShape>(s.points, s.open, surface_for(own));
+  }
+  ShapePtr make(const scene::Polygon& p, const Inherited& own) const {
+    return std::make_unique<PolygonShape>(p.outlines, p.normal, surface_for(own));
+  }
   ShapePtr make(const scene::TriangleMesh& m, const Inherited& own) const;
   ShapePtr make(const scene::Implicit& i, const Inherited& own) const;
   ShapePtr make(const scene::Csg& c, const Inherited& own);

@@ -4,7 +4,9 @@
 // this file only turns those decisions into OpenImageIO calls.
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <memory>
 #include <string>
@@ -39,6 +41,30 @@ std::string write_image(const char* format_path, const char* file, int width, in
   if (written) return "";
   const std::string problem = out->geterror();
   return problem.empty() ? "the writer gave no reason" : problem;
+}
+
+// The pixels of `in` as RGBA floats in `rgba` (4 per pixel); "" or the reason it failed.
+std::string read_rgba(OIIO::ImageInput& in, std::vector<float>& rgba) {
+  const OIIO::ImageSpec& spec = in.spec();
+  const int channels = spec.nchannels;
+  if (channels < 1) return "the image has no channels";
+  const size_t count = size_t(spec.width) * size_t(spec.height);
+  std::vector<float> stored(count * size_t(channels));
+  if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, stored.data())) {
+    const std::string problem = in.geterror();
+    return problem.empty() ? "the reader gave no reason" : problem;
+  }
+  // Grey (1 channel), grey and alpha (2), RGB (3), RGBA (4 or more: the first four).
+  const bool grey = channels < 3;
+  const int alpha = channels == 2 ? 1 : channels >= 4 ? 3 : -1;
+  rgba.resize(count * 4);
+  for (size_t k = 0; k < count; ++k) {
+    const float* from = &stored[k * size_t(channels)];
+    float* to = &rgba[k * 4];
+    for (int c = 0; c < 3; ++c) to[c] = from[grey ? 0 : c];
+    to[3] = alpha >= 0 ? from[alpha] : 1.0f;
+  }
+  return "";
 }
 
 }  // namespace
@@ -85,6 +111,43 @@ CONVRAY_EXPORT int convray_oiio_reads_whole(const char* path, int width, int hei
     in->close();
     return whole ? 1 : 0;
   } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+CONVRAY_EXPORT int convray_oiio_read(const char* path, int* width, int* height, int* linear,
+                                     int* bits, int* grey, float** values, char* message,
+                                     size_t message_size) {
+  *values = nullptr;
+  try {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    if (!in) {
+      const std::string problem = OIIO::geterror();
+      copy_message(problem.empty() ? "OpenImageIO cannot read it" : problem, message, message_size);
+      return 0;
+    }
+    std::vector<float> rgba;
+    const std::string problem = read_rgba(*in, rgba);
+    const OIIO::ImageSpec spec = in->spec();
+    in->close();
+    if (!problem.empty()) {
+      copy_message(problem, message, message_size);
+      return 0;
+    }
+    *width = spec.width;
+    *height = spec.height;
+    *linear = spec.format.is_floating_point() ? 1 : 0;
+    *bits = int(spec.format.size()) * 8;
+    *grey = spec.nchannels < 3 ? 1 : 0;
+    *values = static_cast<float*>(std::malloc(rgba.size() * sizeof(float)));
+    if (!*values) {
+      copy_message("out of memory", message, message_size);
+      return 0;
+    }
+    std::copy(rgba.begin(), rgba.end(), *values);
+    return 1;
+  } catch (const std::exception& e) {
+    copy_message(e.what(), message, message_size);
     return 0;
   }
 }

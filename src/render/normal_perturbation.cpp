@@ -108,7 +108,9 @@ Vec3 pattern_gradient(const scene::PatternSpace& space, const Vec3& world_point)
 
 Vec3 perturb_normal(const scene::Normal& perturbation, const Vec3& world_point,
                     const Vec3& normal) {
-  if (perturbation.space.pattern == scene::Pattern::solid || perturbation.amount == 0.0) {
+  // Block patterns (checker, brick, hexagon) as normals: left out, with the parser's warning.
+  if (perturbation.space.pattern == scene::Pattern::solid || perturbation.amount == 0.0 ||
+      scene::is_block_pattern(perturbation.space.pattern)) {
     return normal;
   }
   if (has_noise_normal(perturbation.space.pattern)) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "render/block_patterns.hpp"
 #include "render/noise.hpp"
 #include "render/noise_patterns.hpp"
 #include "render/sample_hash.hpp"
@@ -112,6 +113,7 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
   switch (space.pattern) {
     case Pattern::solid:
     case Pattern::average:  // pigment.cpp mixes an average's pigments itself
+    case Pattern::image_map:  // and reads an image_map's colours (render/image_map.hpp)
       return 0.0;
     case Pattern::checker:
       return checker_block(q);
@@ -153,6 +155,10 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
       return spiral1(q, space.arms);
     case Pattern::mandel:
       return mandel(q, space.iterations);
+    case Pattern::brick:
+      return brick_block(q, space.brick_size, space.mortar);
+    case Pattern::hexagon:
+      return hexagon_block(q);
   }
   return 0.0;
 }
@@ -169,7 +175,7 @@ double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& patt
          turbulence_vector(q, turbulence.octaves, turbulence.omega, turbulence.lambda);
   }
   const double raw = raw_pattern_value(space, q);
-  if (space.pattern == Pattern::checker || shapes_its_own_wave(space.pattern)) return raw;
+  if (scene::is_block_pattern(space.pattern) || shapes_its_own_wave(space.pattern)) return raw;
   return shaped_by_wave(space, raw * space.frequency + space.phase);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "render/image_map.hpp"
 #include "render/patterns.hpp"
 
 namespace convray::render {
@@ -37,12 +38,10 @@ const std::vector<ColorMapEntry> kBozoMap = {
 const std::vector<ColorMapEntry> kRadialMap = {
     {0.0, rgb(0, 1, 1)}, {1.0 / 3.0, rgb(1, 1, 0)}, {2.0 / 3.0, rgb(1, 0, 1)}, {1.0, rgb(0, 1, 1)}};
 
-const Color kCheckerDefaults[2] = {rgb(0, 0, 1), rgb(0, 1, 0)};
-
-Color checker_color(const scene::Pigment& pigment, const Vec3& world_point) {
-  const int block = int(pattern_value(pigment.space, world_point));
-  if (size_t(block) < pigment.block_colors.size()) return pigment.block_colors[size_t(block)];
-  return kCheckerDefaults[block];
+Color block_color(const scene::Pigment& pigment, const Vec3& world_point) {
+  const size_t block = size_t(pattern_value(pigment.space, world_point));
+  if (block < pigment.block_colors.size()) return pigment.block_colors[block];
+  return scene::default_block_colors(pigment.space.pattern)[block];
 }
 
 }  // namespace
@@ -128,8 +127,13 @@ Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& world_point) {
   switch (pigment.space.pattern) {
     case Pattern::solid:
       return pigment.color;
+    case Pattern::image_map:
+      return image_map_color(*pigment.image_map,
+                             pigment.space.transform.inverse_point(world_point));
     case Pattern::checker:
-      return checker_color(pigment, world_point);
+    case Pattern::brick:
+    case Pattern::hexagon:
+      return block_color(pigment, world_point);
     default:
       break;
   }

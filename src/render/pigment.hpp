@@ -11,7 +11,8 @@
 //                  <1,0.7,0.4> to <0.6,0.3,0> at 1
 //   bozo           white below 0.4, green to 0.6, blue to 0.8, red above
 //   radial         <0,1,1> at 0, <1,1,0> at 1/3, <1,0,1> at 2/3, <0,1,1> at 1
-//   checker        blue, green (one colour given: it, then green)
+//   checker        blue, green (one colour given: it, then green); brick and hexagon: see
+//                  scene::default_block_colors
 #include <vector>
 
 #include "scene/color.hpp"

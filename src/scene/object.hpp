@@ -53,6 +53,25 @@ struct Disc {
   Vec3 center{0.0}, normal{0.0, 1.0, 0.0};
   double radius = 1.0, hole_radius = 0.0;
 };
+// POV-Ray's `polygon`: sub-polygons (each closed, corners in order, the closing corner not
+// repeated) in one plane; a point is inside when it is inside an odd number of them.
+struct Polygon {
+  std::vector<std::vector<Vec3>> outlines;
+  Vec3 normal{0.0, 0.0, 1.0};  // the plane's, not necessarily unit
+};
+// POV-Ray's `sor` (geometry/sor.hpp): points <r, h>, the first and last setting slopes only.
+struct Sor {
+  std::vector<Vec2> points;
+  bool open = false;
+};
+// POV-Ray's `height_field` (geometry/height_field.hpp): heights in [0, 1] on a grid of
+// columns x rows vertices over the unit square of the x-z plane, row 0 at z = 0.
+struct HeightField {
+  int columns = 0, rows = 0;
+  std::vector<double> heights;  // row-major
+  bool smooth = false;          // normals interpolated from the vertices'
+  double water_level = 0.0;     // the surface below this height is not drawn
+};
 // `triangle` and `smooth_triangle` (normals given), and the faces of `mesh` and `mesh2`.
 struct MeshFace {
   std::array<int, 3> vertices{0, 0, 0};
@@ -152,7 +171,7 @@ struct Csg {
 
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Torus, Disc, TriangleMesh,
                            Implicit, Csg, Polynomial, Text, Prism, Superellipsoid,
-                           Lathe>;
+                           Lathe, Polygon, HeightField, Sor>;
 
 // A POV-Ray object convray cannot draw yet (`sor`, `text`, ...) that a scene declared: an
 // empty stand-in, so that include files declaring such objects still work; placing it in the

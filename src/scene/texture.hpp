@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scene/color.hpp"
+#include "scene/image_map.hpp"
 #include "scene/transform.hpp"
 
 namespace convray::scene {
@@ -39,6 +40,9 @@ enum class Pattern {
   spiral1,      // `arms` spirals winding about z like a screw
   mandel,       // the Mandelbrot set in the x-y plane: escape time / `iterations`
   average,      // pigments only: the pigment_map's pigments mixed by their weights
+  image_map,    // pigments only: a picture's colours (Pigment::image_map)
+  brick,        // block pattern: mortar (block 0) and bricks (block 1) in courses along y
+  hexagon,      // block pattern: hexagons in the x-z plane, blocks 0, 1 and 2
 };
 
 // A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
@@ -68,6 +72,8 @@ struct PatternSpace {
   Vec3 gradient_axis{1.0, 0.0, 0.0};  // gradient only
   double arms = 1.0;                  // spiral1 only: its number of arms
   int iterations = 0;                 // mandel only: the most iterations
+  Vec3 brick_size{8.0, 3.0, 4.5};     // brick only: one brick with its mortar
+  double mortar = 0.5;                // brick only: the mortar's width
   double agate_turb = 1.0;            // agate only: the weight of its turbulence
   int noise_generator = 2;            // POV-Ray's noise generator: 1 original, 2 range-corrected
   Turbulence turbulence;
@@ -77,6 +83,28 @@ struct PatternSpace {
   double wave_exponent = 1.0;  // poly_wave's
   Transform transform;     // pattern space -> world
 };
+
+// Checker, brick and hexagon: the value is a block number that picks a listed colour.
+inline bool is_block_pattern(Pattern pattern) {
+  return pattern == Pattern::checker || pattern == Pattern::brick || pattern == Pattern::hexagon;
+}
+
+// How many colours (pigments, textures) a block pattern lists: 2, or 3 for hexagon.
+inline int block_count(Pattern pattern) { return pattern == Pattern::hexagon ? 3 : 2; }
+
+// The colours of a block pattern whose scene lists fewer (measured with the povray binary):
+// checker blue, green; brick mortar grey 0.5, brick <0.6, 0.15, 0.15>; hexagon blue, green,
+// red.
+inline std::vector<Color> default_block_colors(Pattern pattern) {
+  switch (pattern) {
+    case Pattern::brick:
+      return {{Vec3(0.5)}, {Vec3(0.6, 0.15, 0.15)}};
+    case Pattern::hexagon:
+      return {{Vec3(0, 0, 1)}, {Vec3(0, 1, 0)}, {Vec3(1, 0, 0)}};
+    default:
+      return {{Vec3(0, 0, 1)}, {Vec3(0, 1, 0)}};
+  }
+}
 
 struct Pigment;
 
@@ -90,11 +118,13 @@ struct Pigment {
   PatternSpace space;
   Color color;                          // solid; also the colour where no map applies
   std::vector<ColorMapEntry> color_map; // empty: the pattern's default map (render/)
-  // checker (and other block patterns): the listed colours, in order.
+  // checker, brick and hexagon: the listed colours, in order.
   std::vector<Color> block_colors;
   // Set: the pattern's value picks (between two entries: mixes) whole pigments instead of
   // colours; color_map is not used. For `average` the values are the pigments' weights.
   std::vector<PigmentMapEntry> pigment_map;
+  // image_map only: the picture and how it is wrapped.
+  std::shared_ptr<const ImageMap> image_map;
 };
 
 struct Finish {

@@ -50,6 +50,9 @@ scene::ObjectPtr parse_text(Parser& parser);
 scene::ObjectPtr parse_prism(Parser& parser);
 scene::ObjectPtr parse_superellipsoid(Parser& parser);
 scene::ObjectPtr parse_lathe(Parser& parser);
+scene::ObjectPtr parse_polygon(Parser& parser);
+scene::ObjectPtr parse_sor(Parser& parser);
+scene::ObjectPtr parse_height_field(Parser& parser);
 scene::ObjectPtr parse_polynomial(Parser& parser);  // poly, cubic, quartic, quadric
 scene::ObjectPtr parse_disc(Parser& parser);
 scene::ObjectPtr parse_triangle(Parser& parser);  // triangle and smooth_triangle
@@ -77,6 +80,8 @@ scene::Finish parse_finish(Parser& parser, const scene::Finish& start);
 scene::Normal parse_normal(Parser& parser, const scene::Normal& start);
 scene::Interior parse_interior(Parser& parser, const scene::Interior& start);
 ColorMap parse_color_map(Parser& parser);  // color_map or colour_map
+// image_map { ... } (parse_image_map.cpp), the pattern of a pigment.
+std::shared_ptr<const scene::ImageMap> parse_image_map(Parser& parser);
 
 // POV-Ray looks a value v up in a colour map by scanning for the first entry at or above v
 // and blending it with the entry before (below the first entry: its colour; at or above the

@@ -10,6 +10,7 @@ namespace convray::sdl {
 
 class MeshLibrary;
 class ObjectQueries;
+class ImageReader;
 
 struct ParseOptions {
   int image_width = 800, image_height = 600;
@@ -44,6 +45,9 @@ struct ParseOptions {
   // min_extent, max_extent and trace() ask the objects' geometry (sdl/object_queries.hpp);
   // without an implementation they are errors.
   std::shared_ptr<const ObjectQueries> object_queries;
+  // image_map reads its picture through this (sdl/image_reader.hpp); without one, an
+  // image_map is an error.
+  std::shared_ptr<const ImageReader> image_reader;
 };
 
 }  // namespace convray::sdl

@@ -18,8 +18,16 @@ scene::Normal parse_normal(Parser& parser, const scene::Normal& start) {
   if (auto declared = accept_declared<scene::Normal>(parser, "a normal")) normal = *declared;
   static constexpr std::string_view kOwn[] = {"bump_size", "accuracy"};
   while (block.more()) {
+    const SourceLoc pattern_at = parser.peek().loc;
     if (parse_pattern_keyword(parser, normal.space)) {
       normal.amount = kDefaultBumpAmount;
+      if (scene::is_block_pattern(normal.space.pattern)) {
+        // POV-Ray tilts whole blocks of checker, brick and hexagon normals; how is not
+        // measured yet, so the renderer leaves such normals out (render/normal_perturbation).
+        warn_once(parser, pattern_at,
+                  "checker, brick and hexagon as normal patterns are left out by convray (the "
+                  "surface is drawn without their bumps)");
+      }
       // The amount may follow after a comma: `gradient x, 0.5`.
       if (parser.accept(",") || at_float_start(parser)) {
         normal.amount = float_param(parser, "the bump amount");

@@ -39,6 +39,9 @@ constexpr ShapeKeyword kShapes[] = {
     {"prism", parse_prism},
     {"superellipsoid", parse_superellipsoid},
     {"lathe", parse_lathe},
+    {"polygon", parse_polygon},
+    {"sor", parse_sor},
+    {"height_field", parse_height_field},
     {"poly", parse_polynomial},
     {"cubic", parse_polynomial},
     {"quartic", parse_polynomial},
@@ -106,9 +109,8 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 }
 
 constexpr std::string_view kUnsupportedObjects[] = {
-    "sor",
     "polynomial", "isosurface",    "parametric",    "julia_fractal", "bicubic_patch",
-    "height_field", "polygon",     "sphere_sweep",  "ovus",          "lemon"};
+    "sphere_sweep",  "ovus",          "lemon"};
 
 }  // namespace
 

@@ -9,33 +9,35 @@ namespace convray::sdl::items {
 
 namespace {
 
-// POV-Ray's checker colours when the scene gives none.
-const scene::Color kCheckerDefaults[2] = {{Vec3(0.0, 0.0, 1.0)}, {Vec3(0.0, 1.0, 0.0)}};
-
-// `checker [COLOR [, COLOR]]` or `checker pigment { A } [,] pigment { B }` (the pigments
-// become a pigment_map with the blocks' values 0 and 1).
-void parse_checker_colors(Parser& parser, scene::Pigment& pigment) {
-  pigment.block_colors = {kCheckerDefaults[0], kCheckerDefaults[1]};
+// A block pattern's colours: `checker [COLOR [, COLOR]]` or `checker pigment { A } [,]
+// pigment { B }` (the pigments become a pigment_map with the blocks' numbers as values);
+// hexagon takes three. Colours not given keep POV-Ray's defaults; after pigments, blocks not
+// given are black (as the povray binary draws `checker pigment { A }` and `hexagon pigment
+// { A } pigment { B }`).
+void parse_block_colors(Parser& parser, scene::Pigment& pigment) {
+  pigment.block_colors = scene::default_block_colors(pigment.space.pattern);
+  const size_t count = pigment.block_colors.size();
   std::vector<scene::PigmentMapEntry> pigments;
-  for (size_t k = 0; k < 2; ++k) {
-    if (k > 0) parser.accept_comma();
+  size_t given = 0;
+  for (; given < count; ++given) {
+    if (given > 0) parser.accept_comma();
     if (at_word(parser, "pigment")) {
       pigments.push_back(
-          {double(k), std::make_shared<const scene::Pigment>(parse_pigment(parser, {}))});
+          {double(given), std::make_shared<const scene::Pigment>(parse_pigment(parser, {}))});
       continue;
     }
     if (!at_color_start(parser)) break;
-    pigment.block_colors[k] = color_param(parser);
+    pigment.block_colors[given] = color_param(parser);
   }
   if (pigments.empty()) return;
-  for (size_t k = 0; k < 2; ++k) {
+  for (size_t k = 0; k < count; ++k) {
     if (k < pigments.size() && pigments[k].value == double(k)) continue;
     scene::Pigment solid;
-    solid.color = pigment.block_colors[k];
+    solid.color = k < given ? pigment.block_colors[k] : scene::Color{};
     pigments.insert(pigments.begin() + std::ptrdiff_t(k),
                     {double(k), std::make_shared<const scene::Pigment>(solid)});
   }
-  pigments.resize(2);
+  pigments.resize(count);
   pigment.pigment_map = std::move(pigments);
 }
 
@@ -112,12 +114,18 @@ bool parse_pigment_item(Parser& parser, scene::Pigment& pigment) {
     pigment.color_map.clear();
     pigment.block_colors.clear();
     pigment.pigment_map.clear();
+  } else if (at_word(parser, "image_map")) {
+    pigment.image_map = parse_image_map(parser);
+    pigment.space.pattern = scene::Pattern::image_map;
+    pigment.color_map.clear();
+    pigment.block_colors.clear();
+    pigment.pigment_map.clear();
   } else if (auto pattern = parse_pattern_keyword(parser, pigment.space)) {
     // A new pattern replaces the colours of the one it is given over.
     pigment.color_map.clear();
     pigment.block_colors.clear();
     pigment.pigment_map.clear();
-    if (*pattern == scene::Pattern::checker) parse_checker_colors(parser, pigment);
+    if (scene::is_block_pattern(*pattern)) parse_block_colors(parser, pigment);
   } else if (at_word(parser, "color_map") || at_word(parser, "colour_map")) {
     pigment.color_map = parse_color_map(parser);
     pigment.pigment_map.clear();
@@ -195,6 +203,9 @@ scene::Pigment parse_pigment(Parser& parser, const scene::Pigment& start) {
   }
   if (pigment.space.pattern == scene::Pattern::average && pigment.pigment_map.empty()) {
     parser.fail(loc, "an average pigment needs a pigment_map { [weight pigment] ... }");
+  }
+  if (pigment.space.pattern == scene::Pattern::image_map && pigment.space.turbulence.active()) {
+    parser.fail_unsupported(loc, "turbulence on an image_map is not supported yet by convray");
   }
   return pigment;
 }

@@ -69,9 +69,9 @@ void parse_texture_map_entries(Parser& parser, scene::TextureMap& map) {
   if (map.textures.empty()) parser.fail(block.loc(), "texture_map has no entries");
 }
 
-// `checker` followed by up to two textures.
-void parse_checker_textures(Parser& parser, scene::TextureMap& map) {
-  for (int k = 0; k < 2 && at_word(parser, "texture"); ++k) {
+// A block pattern followed by up to two textures (three for hexagon).
+void parse_block_textures(Parser& parser, scene::TextureMap& map) {
+  for (int k = 0; k < scene::block_count(map.space.pattern) && at_word(parser, "texture"); ++k) {
     map.textures.push_back(
         std::make_shared<const scene::Texture>(parse_texture(parser, parser.defaults().texture)));
     parser.accept_comma();
@@ -100,8 +100,8 @@ bool parse_texture_pattern(Parser& parser, scene::Texture& texture) {
   } else if (accept_word(parser, "average")) {
     map.kind = Kind::average;
   } else if (auto pattern = parse_pattern_keyword(parser, map.space)) {
-    map.kind = *pattern == scene::Pattern::checker ? Kind::blocks : Kind::map;
-    if (map.kind == Kind::blocks) parse_checker_textures(parser, map);
+    map.kind = scene::is_block_pattern(*pattern) ? Kind::blocks : Kind::map;
+    if (map.kind == Kind::blocks) parse_block_textures(parser, map);
   } else {
     return false;
   }

@@ -201,6 +201,7 @@ scene::Scene Parser::parse_scene() {
     }
   }
   apply_legacy_gamma(scene);
+  for (const auto& action : impl_->parse_end_actions) action(scene);
   return scene;
 }
 
@@ -219,6 +220,10 @@ void Parser::apply_legacy_gamma(scene::Scene& scene) {
 }
 
 void Parser::note_assumed_gamma() { impl_->assumed_gamma_given = true; }
+
+void Parser::at_parse_end(std::function<void(const scene::Scene&)> action) {
+  impl_->parse_end_actions.push_back(std::move(action));
+}
 
 const Token& Parser::peek() { return impl_->materialize(); }
 

@@ -80,6 +80,9 @@ class Parser {
   // global_settings gave assumed_gamma: POV-Ray's gamma rule for scenes older than 3.7
   // (applied when the scene ends) does not apply.
   void note_assumed_gamma();
+  // Runs `action` once the whole scene is read, with its final settings (an image_map's
+  // colours depend on the scene's gamma, which global_settings may give after it).
+  void at_parse_end(std::function<void(const scene::Scene&)> action);
   Defaults& defaults();
   // A file named in the scene (mesh, include), resolved as POV-Ray resolves includes: the
   // scene's folder, the +L paths, the installed include folder. Fails at `loc` if not found.

@@ -152,6 +152,7 @@ struct Parser::Impl {
   double language_version = 3.7;
   bool version_given = false;        // a #version directive was read
   bool assumed_gamma_given = false;  // global_settings { assumed_gamma ... } was read
+  std::vector<std::function<void(const scene::Scene&)>> parse_end_actions;  // at_parse_end
 
   int nesting_depth = 0;
   int open_blocks = 0;

@@ -25,18 +25,19 @@ constexpr PatternKeyword kPatterns[] = {
     {"planar", scene::Pattern::planar},   {"spherical", scene::Pattern::spherical},
     {"cylindrical", scene::Pattern::cylindrical}, {"boxed", scene::Pattern::boxed},
     {"spiral1", scene::Pattern::spiral1}, {"mandel", scene::Pattern::mandel},
+    {"brick", scene::Pattern::brick},     {"hexagon", scene::Pattern::hexagon},
 };
 
 constexpr std::string_view kPatternNames[] = {
     "checker", "gradient", "marble",  "wood",    "granite", "agate",    "bozo",  "radial",
     "onion",   "leopard",  "spotted", "ripples", "waves",   "wrinkles", "bumps", "dents",
-    "planar",  "spherical", "cylindrical", "boxed", "spiral1", "mandel"};
+    "planar",  "spherical", "cylindrical", "boxed", "spiral1", "mandel",  "brick", "hexagon"};
 
 // POV-Ray patterns we know by name, so that they get "not supported yet" rather than
 // "unexpected".
 constexpr std::string_view kUnsupportedPatterns[] = {
-    "brick",      "hexagon",      "crackle",      "cells",         "spiral2",
-    "julia",        "image_map",    "bump_map",      "function",    "pigment_pattern",
+    "crackle",      "cells",         "spiral2",
+    "julia",        "bump_map",      "function",    "pigment_pattern",
     "object",     "density_file", "quilted",      "facets",
     "average",      "tiling",        "pavement",    "square",
     "triangular", "slope",        "aoi",          "image_pattern", "magnet",
@@ -47,7 +48,7 @@ constexpr std::string_view kModifiers[] = {
     "turbulence",    "octaves",     "omega",        "lambda",     "frequency", "phase",
     "translate",     "rotate",      "scale",        "matrix",     "transform", "ramp_wave",
     "triangle_wave", "sine_wave",   "scallop_wave", "cubic_wave", "poly_wave", "noise_generator",
-    "agate_turb",    "quick_color", "quick_colour"};
+    "agate_turb",    "quick_color", "quick_colour", "brick_size", "mortar"};
 
 }  // namespace
 
@@ -150,6 +151,14 @@ bool parse_pattern_modifier(Parser& parser, scene::PatternSpace& space) {
   } else if (word == "poly_wave") {
     space.wave = scene::Wave::poly;
     space.wave_exponent = at_float_start(parser) ? float_param(parser, "poly_wave") : 1.0;
+  } else if (word == "brick_size") {
+    // POV-Ray takes these whatever the pattern; only brick uses them.
+    space.brick_size = vector_param(parser, "brick_size");
+    if (!(space.brick_size.x > 0.0 && space.brick_size.y > 0.0 && space.brick_size.z > 0.0)) {
+      parser.fail(loc, "brick_size must be positive along every axis");
+    }
+  } else if (word == "mortar") {
+    space.mortar = float_param(parser, "mortar");
   } else if (word == "quick_color" || word == "quick_colour") {
     color_param(parser);  // a preview colour: irrelevant to a full render
   } else if (word == "agate_turb") {

@@ -195,14 +195,14 @@ TEST(ItemsObject, DeclaredMaterialKeepsItsTexture) {
 }
 
 TEST(ItemsObject, UnsupportedObjectsFailButMayBeDeclared) {
-  EXPECT_TRUE(fails_with("union { sphere { 0, 1 } sor { } }", 1, 25,
-                         "'sor' objects are not supported yet"));
+  EXPECT_TRUE(fails_with("union { sphere { 0, 1 } ovus { } }", 1, 25,
+                         "'ovus' objects are not supported yet"));
   // text objects are drawn now: a missing font is the error, at its name.
   EXPECT_TRUE(fails_with("text { ttf \"no-such-font.ttf\" \"A\" 1, 0 }", 1, 12,
                          "file not found: 'no-such-font.ttf'"));
   // Include files declare such objects that most scenes never use: declaring one warns.
-  const auto result = parse("#declare L = sor { 4, <0, 0>, <1, 1>, <1, 2>, <0, 3> }");
-  EXPECT_TRUE(has_warning(result, "'sor' objects are not supported yet"));
+  const auto result = parse("#declare L = ovus { 1, 0.5 }");
+  EXPECT_TRUE(has_warning(result, "'ovus' objects are not supported yet"));
 }
 
 TEST(ItemsObject, FlagsAndInterior) {

@@ -208,7 +208,7 @@ TEST(ItemsTexture, TextureTransformsMovePigmentAndNormal) {
 TEST(ItemsTexture, Errors) {
   EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { chcker } }", 1, 25,
                          "unexpected 'chcker' in pigment (did you mean 'checker'?)"));
-  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { brick } }", 1, 25, "not supported yet"));
+  EXPECT_TRUE(fails_with("sphere { 0, 1 pigment { tiling 1 } }", 1, 25, "not supported yet"));
   EXPECT_TRUE(
       fails_with("sphere { 0, 1 finish { phong_sise 3 } }", 1, 24, "did you mean 'phong_size'?"));
   EXPECT_TRUE(

@@ -1,9 +1,8 @@
-// Objects convray cannot draw yet (sor, text, lathe, ...): declaring one is accepted with a
+// Objects convray cannot draw yet (ovus, lemon, sphere_sweep, ...): declaring one is accepted with a
 // warning (include files declare many), but placing it in the scene, directly or inside CSG,
 // is an error at the place of use that names the kind: never a silently missing object.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <string>
 
 #include "core_test_support.hpp"
@@ -14,7 +13,7 @@ namespace {
 using core_testing::run;
 using core_testing::scene_error;
 
-const char* kDeclared = "#declare Vase = sor { 4, <0, 0>, <1, 0>, <0.5, 1>, <0, 1.5> }\n";
+const char* kDeclared = "#declare Vase = ovus { 1, 0.5 }\n";
 
 TEST(UnsupportedObjects, DeclaredAndNeverPlacedWarns) {
   const ParseResult result = run(std::string(kDeclared) +
@@ -23,7 +22,7 @@ TEST(UnsupportedObjects, DeclaredAndNeverPlacedWarns) {
                                  "sphere { 0, 1 }\n");
   EXPECT_EQ(result.scene.objects.size(), 1u);
   bool warned = false;
-  for (const std::string& w : result.warnings) warned |= w.find("'sor' objects") != std::string::npos;
+  for (const std::string& w : result.warnings) warned |= w.find("'ovus' objects") != std::string::npos;
   EXPECT_TRUE(warned);
 }
 
@@ -31,7 +30,7 @@ TEST(UnsupportedObjects, PlacingOneIsAnErrorWhereItIsPlaced) {
   const auto direct = scene_error(std::string(kDeclared) + "object { Vase translate x }\n");
   EXPECT_EQ(direct.loc.line, 2);
   EXPECT_EQ(direct.loc.column, 1);
-  EXPECT_NE(direct.first_line.find("'sor' objects are not supported"), std::string::npos)
+  EXPECT_NE(direct.first_line.find("'ovus' objects are not supported"), std::string::npos)
       << direct.first_line;
   EXPECT_NE(direct.first_line.find("declared at test.pov:1:17"), std::string::npos)
       << direct.first_line;
@@ -40,25 +39,13 @@ TEST(UnsupportedObjects, PlacingOneIsAnErrorWhereItIsPlaced) {
                                   "#declare Group = union { object { Vase } sphere { 0, 1 } }\n"
                                   "object { Group }\n");
   EXPECT_EQ(in_csg.loc.line, 3);
-  EXPECT_NE(in_csg.first_line.find("'sor'"), std::string::npos);
+  EXPECT_NE(in_csg.first_line.find("'ovus'"), std::string::npos);
   const auto clipping =
       scene_error(std::string(kDeclared) + "sphere { 0, 1 clipped_by { object { Vase } } }\n");
   EXPECT_EQ(clipping.loc.line, 2);
   // Written in place, the object itself is the error.
-  EXPECT_NE(scene_error("sor { 4, <0, 0>, <1, 1>, <1, 2>, <0, 3> }").first_line.find("'sor' objects"),
+  EXPECT_NE(scene_error("ovus { 1, 0.5 }").first_line.find("'ovus' objects"),
             std::string::npos);
-}
-
-TEST(UnsupportedObjects, PovRaysSor1SceneIsRefused) {
-  const std::string path = "/usr/share/povray-3.7/scenes/objects/sor1.pov";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is not installed (povray)";
-  try {
-    parse_file(path, {});
-    ADD_FAILURE() << "sor1.pov places declared sor objects: it must be refused";
-  } catch (const InputError& error) {
-    EXPECT_NE(error.message().find("'sor' objects are not supported"), std::string::npos);
-    EXPECT_GT(error.loc().line, 0);
-  }
 }
 
 }  // namespace
