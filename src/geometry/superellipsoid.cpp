@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/box.hpp"
+#include "core/bracket_refine.hpp"
 
 namespace convray::geometry {
 
@@ -56,31 +57,24 @@ double SuperellipsoidShape::slope_along(const Ray& ray, double t) const {
 // f(lo) and f(hi) differ in sign: the crossing between them.
 double SuperellipsoidShape::refine(const Ray& ray, double lo, double hi) const {
   const bool lo_inside = implicit_value(ray.at(lo)) < 0.0;
-  for (int i = 0; i < kBisections; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    ((implicit_value(ray.at(mid)) < 0.0) == lo_inside ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  return core::bisect_to_rounding(
+      lo, hi, [&](double t) { return (implicit_value(ray.at(t)) < 0.0) == lo_inside; },
+      kBisections);
 }
 
 // Convex f: its minimum along [lo, hi] by bisection on the slope's sign, then a root on
 // each side where f changes sign.
 void SuperellipsoidShape::convex_roots(const Ray& ray, double lo, double hi,
                                        std::vector<double>& roots) const {
-  double a = lo, b = hi;
-  if (slope_along(ray, a) >= 0.0) {
-    b = a;
-  } else if (slope_along(ray, b) <= 0.0) {
-    a = b;
+  double lowest;
+  if (slope_along(ray, lo) >= 0.0) {
+    lowest = lo;
+  } else if (slope_along(ray, hi) <= 0.0) {
+    lowest = hi;
   } else {
-    for (int i = 0; i < kBisections; ++i) {
-      const double mid = 0.5 * (a + b);
-      if (mid <= a || mid >= b) break;
-      (slope_along(ray, mid) < 0.0 ? a : b) = mid;
-    }
+    lowest = core::bisect_to_rounding(
+        lo, hi, [&](double t) { return slope_along(ray, t) < 0.0; }, kBisections);
   }
-  const double lowest = 0.5 * (a + b);
   if (!(implicit_value(ray.at(lowest)) < 0.0)) return;
   if (implicit_value(ray.at(lo)) >= 0.0) roots.push_back(refine(ray, lo, lowest));
   if (implicit_value(ray.at(hi)) >= 0.0) roots.push_back(refine(ray, lowest, hi));

@@ -3,24 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "implicit/de_casteljau.hpp"
+
 namespace convray::implicit {
 namespace {
 
 constexpr int kDegree = 6;
 constexpr int kMaxDepth = 60;
-
-// Splits at s: the coefficients over [0, s] (left) and [s, 1] (right).
-void split(const Poly6& b, double s, Poly6* left, Poly6* right) {
-  Poly6 work = b;
-  Poly6 l{}, r{};
-  for (int level = 0; level <= kDegree; ++level) {
-    l[level] = work[0];
-    r[kDegree - level] = work[kDegree - level];
-    for (int k = 0; k < kDegree - level; ++k) work[k] = work[k] + s * (work[k + 1] - work[k]);
-  }
-  if (left) *left = l;
-  if (right) *right = r;
-}
 
 // The s-range where the convex hull of the control points (k/6, b_k) meets |y| <= band. The
 // hull's edges are among the segments between control points, and segments inside the hull do
@@ -77,7 +66,7 @@ struct Isolator {
     const double width = hi - lo;
     if (c - a > 0.8) {  // clipping stalls: two roots (or a wide band); halve
       Poly6 left, right;
-      split(b, 0.5, &left, &right);
+      de_casteljau_split(b, 0.5, &left, &right);
       const double mid = lo + 0.5 * width;
       return run(left, lo, mid, depth + 1) && run(right, mid, hi, depth + 1);
     }
@@ -89,10 +78,10 @@ struct Isolator {
 
 Poly6 bernstein_restrict(const Poly6& b, double a, double c) {
   Poly6 head;
-  split(b, c, &head, nullptr);
+  de_casteljau_split(b, c, &head, nullptr);
   if (c <= 0.0) return head;
   Poly6 tail;
-  split(head, a / c, nullptr, &tail);
+  de_casteljau_split(head, a / c, nullptr, &tail);
   return tail;
 }
 

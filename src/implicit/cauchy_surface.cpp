@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/bracket_refine.hpp"
 #include "field/cauchy.hpp"
-#include "implicit/bracket_refine.hpp"
 
 namespace convray::implicit {
 
@@ -221,7 +221,7 @@ struct CauchySurface::Tracer {
   // A sign change of F - T in [t0, t1] (f0, f1 its values), refined on the exact field by the
   // tracers' one bracketed refiner, to a few ulps.
   double refine(double t0, double t1, double f0, double f1) const {
-    return refine_bracket(t0, t1, f0, f1, [&](double t) { return excess(t); });
+    return core::refine_bracket(t0, t1, f0, f1, [&](double t) { return excess(t); });
   }
 
   SurfaceHit smooth_hit(double t) const {
@@ -423,13 +423,9 @@ void cauchy_reference_roots(const CauchySurface& surface, const Ray& ray, double
     const double t1 = k == count ? tmax : tmin + (tmax - tmin) * double(k) / double(count);
     const bool inside1 = excess(t1) >= 0.0;
     if (inside1 != inside0) {
-      double lo = t0, hi = t1;  // inside(lo) == inside0 != inside(hi)
-      while (true) {
-        const double mid = 0.5 * (lo + hi);
-        if (!(mid > lo && mid < hi)) break;
-        ((excess(mid) >= 0.0) == inside0 ? lo : hi) = mid;
-      }
-      out.push_back(0.5 * (lo + hi));
+      // inside(t0) == inside0 != inside(t1)
+      out.push_back(core::bisect_to_rounding(
+          t0, t1, [&](double t) { return (excess(t) >= 0.0) == inside0; }));
     }
     t0 = t1;
     inside0 = inside1;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "implicit/de_casteljau.hpp"
+
 namespace convray::implicit {
 namespace {
 
@@ -17,18 +19,6 @@ int sign_variations(const Control& b) {
     last = x;
   }
   return count;
-}
-
-// De Casteljau at the middle: the control points of each half.
-void halve(const Control& b, Control& left, Control& right) {
-  Control t = b;
-  left[0] = t[0];
-  right[4] = t[4];
-  for (int level = 1; level <= 4; ++level) {
-    for (int j = 0; j <= 4 - level; ++j) t[j] = 0.5 * (t[j] + t[j + 1]);
-    left[level] = t[0];
-    right[4 - level] = t[4 - level];
-  }
 }
 
 bool differ(double a, double b) { return (a < 0.0) != (b < 0.0); }
@@ -59,7 +49,7 @@ class Isolator {
       return;
     }
     Control left, right;
-    halve(b, left, right);
+    de_casteljau_halve(b, left, right);
     search(left, lo, mid, depth + 1);
     search(right, mid, hi, depth + 1);
   }

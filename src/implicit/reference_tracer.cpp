@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/bracket_refine.hpp"
 #include "implicit/surface_impl.hpp"
 
 namespace convray::implicit {
@@ -35,23 +36,18 @@ double lipschitz(const ConvolutionSurface::Impl& s, uint32_t id) {
   return std::abs(g.strength) * 16.0 * kPi * g.radius / 15.0;
 }
 
-// Bisection of a sign change of the exact field down to adjacent doubles.
-double bisect(const ConvolutionSurface& surface, const Ray& ray, double lo, double hi,
-              double g_lo, TraceStats& stats) {
+// Bisection of a sign change of the exact field down to adjacent doubles (at most 200 halvings).
+double bisect(const ConvolutionSurface& surface, const Ray& ray, double lo, double hi, double g_lo,
+              TraceStats& stats) {
   const double threshold = surface.threshold();
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (!(mid > lo && mid < hi)) break;
-    ++stats.field_evaluations;
-    const double g = surface.field(ray.at(mid)).value - threshold;
-    if ((g >= 0.0) == (g_lo >= 0.0)) {
-      lo = mid;
-      g_lo = g;
-    } else {
-      hi = mid;
-    }
-  }
-  return 0.5 * (lo + hi);
+  const bool lo_inside = g_lo >= 0.0;
+  return core::bisect_to_rounding(
+      lo, hi,
+      [&](double t) {
+        ++stats.field_evaluations;
+        return (surface.field(ray.at(t)).value - threshold >= 0.0) == lo_inside;
+      },
+      200);
 }
 
 }  // namespace

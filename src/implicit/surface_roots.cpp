@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "core/bracket_refine.hpp"
 #include "field/triangle_batch.hpp"
 #include "implicit/bezier_clip.hpp"
-#include "implicit/bracket_refine.hpp"
 #include "implicit/interval_fit.hpp"
 #include "core/box.hpp"
 #include "implicit/sphere_sweep.hpp"
@@ -16,12 +16,6 @@
 namespace convray::implicit {
 namespace {
 
-// A fit's error is estimated from the exact field at s = 1/8 and 7/8, where the interpolation
-// error of the 7 conditions peaks, times this safety factor.
-constexpr double kErrorSafety = 3.0;
-// Fits whose error estimate exceeds this fraction of T are split in two, at most kMaxSplits deep.
-constexpr double kFitTolerance = 1e-3;
-constexpr int kMaxSplits = 4;
 // A first-root search gathers this fraction of the ray's way through the bounds first, and
 // twice as much each time it finds nothing (see find_roots).
 constexpr double kFirstChunk = 0.125;
@@ -107,10 +101,9 @@ void RayTracer::fit_recursive(uint32_t id, double t0, double t1, double v0, doub
   if (!exact_kind) {
     e1 = value(id, t0 + width / 8.0);
     e7 = value(id, t0 + width * 7.0 / 8.0);
-    piece.error = kErrorSafety * std::max(std::abs(evaluate(piece.poly, 0.125) - e1),
-                                          std::abs(evaluate(piece.poly, 0.875) - e7));
+    piece.error = fit_error_estimate(piece.poly, e1, e7);
   }
-  if (piece.error > kFitTolerance * s_.threshold && depth < kMaxSplits) {
+  if (fit_needs_split(piece.error, s_.threshold, depth)) {
     ++stats_.subdivisions;
     const double mid = t0 + 0.5 * width;
     const double g_mid = slope(id, mid);
@@ -176,12 +169,12 @@ double RayTracer::exact_minus_threshold(const ExactSum& exact, double t) {
   return sum - s_.threshold;
 }
 
-// The exact field's root in a sign-changing bracket (bracket_refine.hpp).
+// The exact field's root in a sign-changing bracket (core/bracket_refine.hpp).
 double RayTracer::polish(const ExactSum& ids, double lo, double hi, double g_lo,
                          double g_hi) {
   ++stats_.roots;
-  return refine_bracket(lo, hi, g_lo, g_hi,
-                        [&](double t) { return exact_minus_threshold(ids, t); });
+  return core::refine_bracket(lo, hi, g_lo, g_hi,
+                              [&](double t) { return exact_minus_threshold(ids, t); });
 }
 
 // A region from the band isolation may hold a crossing (the exact field changes sign across

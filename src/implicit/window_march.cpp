@@ -5,9 +5,9 @@
 #include <initializer_list>
 #include <limits>
 
+#include "core/bracket_refine.hpp"
 #include "field/triangle_batch.hpp"
 #include "field/triangle_quartic.hpp"
-#include "implicit/bracket_refine.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -310,9 +310,9 @@ bool Marcher::bracket(const Sample& a, const Sample& b) {
   if (mode_ != RootMode::any) {
     ++stats_.roots;
     const Guess guess = hermite_root(a, b);
-    t = refine_bracket(a.t, b.t, a.g, b.g,
-                       [&](double x) { return field_.value_minus_threshold(x); },
-                       guess.t, guess.slope);
+    t = core::refine_bracket(a.t, b.t, a.g, b.g,
+                             [&](double x) { return field_.value_minus_threshold(x); },
+                             guess.t, guess.slope);
   }
   if (out_.empty() || t > out_.back() + 1e-9 * s_.min_radius) out_.push_back(t);
   last_root_ = t;

@@ -12,7 +12,7 @@
 //     F(a) + F'(a) s +- M s^2 / 2 and F(b) - F'(b) s' +- M s'^2 / 2 bound F; a window where
 //     neither can reach T holds no pair of crossings, and one where they can is halved.
 // A sign change between samples brackets a root, which is refined on the exact field
-// (bracket_refine.hpp). The bound on |F''| follows from the kernel K(r) = (1 - r^2/R^2)^2,
+// (core/bracket_refine.hpp). The bound on |F''| follows from the kernel K(r) = (1 - r^2/R^2)^2,
 // whose second derivative along any line is at most 8/R^2 in size: a triangle contributes at
 // most 8/R^2 times its area, and at most 4 pi (the Hessian integrated over the disk where its
 // plane meets the ball; window_march.cpp), a segment 8/R^2 times its length

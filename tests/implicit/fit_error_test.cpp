@@ -3,8 +3,9 @@
 // the fit and the exact field at s = 1/8 and 7/8, the piece split at its middle while that
 // exceeds 1e-3 T, at most 4 levels deep. Checked against the error measured by sampling each
 // piece densely, on random segments, triangles, arcs and blob cylinders and random rays.
-// The pieces are made the way the tracer makes them (surface_roots.cpp, fit_recursive); what
-// is checked is the estimate against the error measured on the exact field.
+// The pieces are split by the tracer's own rule (interval_fit.hpp: fit_error_estimate and
+// fit_needs_split, which surface_roots.cpp calls); what is checked is that estimate against
+// the error measured on the exact field.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -17,10 +18,6 @@
 namespace convray::implicit {
 namespace {
 
-// The rule of docs/ray-tracing.md ("Error bound").
-constexpr double kErrorSafety = 3.0;
-constexpr double kFitTolerance = 1e-3;  // of T
-constexpr int kMaxSplits = 4;
 constexpr int kSamples = 400;  // per piece, for the measured error
 
 struct Piece {
@@ -68,9 +65,8 @@ class FitChecker {
     const double w = t1 - t0;
     const Poly6 poly = fit_degree6({v0, g0, v1, g1, {q[0], q[1], q[2]}}, w);
     const double e1 = f(id, t0 + w / 8.0), e7 = f(id, t0 + 7.0 * w / 8.0);
-    const double estimate = kErrorSafety * std::max(std::abs(evaluate(poly, 0.125) - e1),
-                                                    std::abs(evaluate(poly, 0.875) - e7));
-    if (estimate > kFitTolerance * s_.threshold && depth < kMaxSplits) {
+    const double estimate = fit_error_estimate(poly, e1, e7);
+    if (fit_needs_split(estimate, s_.threshold, depth)) {
       const double mid = t0 + 0.5 * w, g_mid = slope(id, mid);
       const double left[3] = {e1, q[0], f(id, t0 + 3.0 * w / 8.0)};
       const double right[3] = {f(id, t0 + 5.0 * w / 8.0), q[2], e7};

@@ -1,10 +1,13 @@
 #pragma once
-// The safeguarded bracketed refiner of the ray tracers. On a sign-changing bracket it steps by
-// secants through the last two points evaluated (superlinear near a simple root), falling back
-// to regula falsi of the bracket for the first step and to bisection whenever a step leaves the
-// bracket or the steps stop shrinking; once a step is below the resolution, it lands just past
-// the root's side of the last point, so the bracket closes around the root. It stops when the
-// bracket is a few ulps wide or the function is exactly zero.
+// The bracketed root refiners every layer shares (implicit's tracers, geometry's shapes): the
+// safeguarded secant refiner and plain bisection to adjacent doubles.
+//
+// refine_bracket: the safeguarded bracketed refiner of the ray tracers. On a sign-changing bracket
+// it steps by secants through the last two points evaluated (superlinear near a simple root),
+// falling back to regula falsi of the bracket for the first step and to bisection whenever a step
+// leaves the bracket or the steps stop shrinking; once a step is below the resolution, it lands
+// just past the root's side of the last point, so the bracket closes around the root. It stops when
+// the bracket is a few ulps wide or the function is exactly zero.
 //
 // `g(t)` is the exact function (the field minus T); g_lo = g(lo) and g_hi = g(hi) differ in
 // sign. `guess`, when inside the bracket, is evaluated first, and the first step is Newton's
@@ -15,7 +18,7 @@
 #include <cmath>
 #include <limits>
 
-namespace convray::implicit {
+namespace convray::core {
 
 template <class Function>
 double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&& g,
@@ -68,4 +71,20 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
   return std::abs(g_lo) < std::abs(g_hi) ? lo : hi;
 }
 
-}  // namespace convray::implicit
+// bisect_to_rounding: bisection of a bracket [lo, hi] down to adjacent doubles (or at most
+// `max_halvings` halvings), for references and shapes that want a crossing to rounding level
+// with no assumption on the function's smoothness. `on_lo_side(t)` tells whether t lies on lo's
+// side of the crossing; it is called only on points strictly inside the bracket. Returns the
+// midpoint of the final bracket.
+template <class Predicate>
+double bisect_to_rounding(double lo, double hi, Predicate&& on_lo_side,
+                          int max_halvings = std::numeric_limits<int>::max()) {
+  for (int i = 0; i < max_halvings; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    (on_lo_side(mid) ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace convray::core

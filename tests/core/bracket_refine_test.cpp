@@ -1,8 +1,8 @@
-// The tracers' one bracketed refiner (implicit/bracket_refine.hpp) against roots known in closed
-// form: it must end within a few ulps of the exact root for simple roots, multiple roots and
-// jumps, never evaluate outside the bracket, and (being superlinear) need far fewer evaluations
-// than bisection on smooth functions, fewer still from a good guess with its slope.
-#include "implicit/bracket_refine.hpp"
+// The bracketed refiners (core/bracket_refine.hpp) against roots known in closed form. The
+// safeguarded refiner must end within a few ulps of the exact root for simple roots, multiple
+// roots and jumps, never evaluate outside the bracket, and (being superlinear) need far fewer
+// evaluations than bisection on smooth functions, fewer still from a good guess with its slope.
+#include "core/bracket_refine.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace convray::implicit {
+namespace convray::core {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -109,5 +109,29 @@ TEST(BracketRefine, AGoodGuessWithItsSlopeConvergesInAFewEvaluations) {
   }
 }
 
+// Bisection to rounding: the crossing of a predicate, located to adjacent doubles, never asking
+// outside the open bracket. Oracles: a step at a known double (the answer is that double's
+// neighbourhood, one ulp), cbrt(2) for x^3 - 2, and the width (hi - lo) / 2^k after k halvings.
+TEST(BisectToRounding, EndsBetweenAdjacentDoublesAroundTheCrossing) {
+  const double step = 0.3;
+  int outside = 0;
+  const double at = bisect_to_rounding(-1.0, 2.0, [&](double t) {
+    outside += !(t > -1.0 && t < 2.0);
+    return t < step;
+  });
+  EXPECT_LE(std::abs(at - step), std::nextafter(step, 1.0) - step);
+  EXPECT_EQ(outside, 0);
+  const double cube_root = bisect_to_rounding(1.0, 2.0, [](double t) { return t * t * t < 2.0; });
+  EXPECT_NEAR(cube_root, std::cbrt(2.0), 2.0 * kEps * std::cbrt(2.0));
+}
+
+TEST(BisectToRounding, StopsAfterTheGivenNumberOfHalvings) {
+  int calls = 0;
+  const double at = bisect_to_rounding(
+      0.0, 1.0, [&](double t) { return ++calls, t < 1.0 / 3.0; }, 10);
+  EXPECT_EQ(calls, 10);
+  EXPECT_LE(std::abs(at - 1.0 / 3.0), std::ldexp(1.0, -11));  // half the last width, 2^-10
+}
+
 }  // namespace
-}  // namespace convray::implicit
+}  // namespace convray::core
