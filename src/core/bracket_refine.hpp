@@ -18,7 +18,7 @@
 #include <cmath>
 #include <limits>
 
-namespace convray::core {
+namespace convray {
 
 template <class Function>
 double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&& g,
@@ -87,4 +87,4 @@ double bisect_to_rounding(double lo, double hi, Predicate&& on_lo_side,
   return 0.5 * (lo + hi);
 }
 
-}  // namespace convray::core
+}  // namespace convray

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/box.hpp"
-#include "implicit/bracket_refine.hpp"
+#include "core/bracket_refine.hpp"
 
 namespace convray::geometry {
 
@@ -97,7 +97,7 @@ void IsosurfaceShape::march(const Ray& ray, double tmin, double tmax, bool first
     const double t1 = std::min(t + step, b);
     const double g1 = g(t1);
     if ((g0 < 0.0) != (g1 < 0.0) && std::isfinite(g0) && std::isfinite(g1)) {
-      const double root = implicit::refine_bracket(t, t1, g0, g1, g);
+      const double root = refine_bracket(t, t1, g0, g1, g);
       add_crossing(root, outward_normal(ray.at(root)), surface_.get(), tmin, tmax, out);
       if (first_only && !out.empty()) return;
     }

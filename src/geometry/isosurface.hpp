@@ -6,7 +6,7 @@
 // Along a ray, g(t) = f(ray.at(t)) - T changes by at most G per unit of t (G is the scene's
 // promise, as in POV-Ray: too small a G can step over thin parts). From a point where
 // |g| = v no root lies closer than v / G, so the march steps by max(v / G, A) and every sign
-// change is refined by the tracers' bracketed refiner (implicit/bracket_refine.hpp).
+// change is refined by the tracers' bracketed refiner (core/bracket_refine.hpp).
 #include <memory>
 
 #include "geometry/primitive.hpp"

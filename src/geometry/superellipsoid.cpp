@@ -57,7 +57,7 @@ double SuperellipsoidShape::slope_along(const Ray& ray, double t) const {
 // f(lo) and f(hi) differ in sign: the crossing between them.
 double SuperellipsoidShape::refine(const Ray& ray, double lo, double hi) const {
   const bool lo_inside = implicit_value(ray.at(lo)) < 0.0;
-  return core::bisect_to_rounding(
+  return bisect_to_rounding(
       lo, hi, [&](double t) { return (implicit_value(ray.at(t)) < 0.0) == lo_inside; },
       kBisections);
 }
@@ -72,7 +72,7 @@ void SuperellipsoidShape::convex_roots(const Ray& ray, double lo, double hi,
   } else if (slope_along(ray, hi) <= 0.0) {
     lowest = hi;
   } else {
-    lowest = core::bisect_to_rounding(
+    lowest = bisect_to_rounding(
         lo, hi, [&](double t) { return slope_along(ray, t) < 0.0; }, kBisections);
   }
   if (!(implicit_value(ray.at(lowest)) < 0.0)) return;

@@ -221,7 +221,7 @@ struct CauchySurface::Tracer {
   // A sign change of F - T in [t0, t1] (f0, f1 its values), refined on the exact field by the
   // tracers' one bracketed refiner, to a few ulps.
   double refine(double t0, double t1, double f0, double f1) const {
-    return core::refine_bracket(t0, t1, f0, f1, [&](double t) { return excess(t); });
+    return refine_bracket(t0, t1, f0, f1, [&](double t) { return excess(t); });
   }
 
   SurfaceHit smooth_hit(double t) const {
@@ -424,7 +424,7 @@ void cauchy_reference_roots(const CauchySurface& surface, const Ray& ray, double
     const bool inside1 = excess(t1) >= 0.0;
     if (inside1 != inside0) {
       // inside(t0) == inside0 != inside(t1)
-      out.push_back(core::bisect_to_rounding(
+      out.push_back(bisect_to_rounding(
           t0, t1, [&](double t) { return (excess(t) >= 0.0) == inside0; }));
     }
     t0 = t1;

@@ -41,7 +41,7 @@ double bisect(const ConvolutionSurface& surface, const Ray& ray, double lo, doub
               TraceStats& stats) {
   const double threshold = surface.threshold();
   const bool lo_inside = g_lo >= 0.0;
-  return core::bisect_to_rounding(
+  return bisect_to_rounding(
       lo, hi,
       [&](double t) {
         ++stats.field_evaluations;

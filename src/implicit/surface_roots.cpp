@@ -173,7 +173,7 @@ double RayTracer::exact_minus_threshold(const ExactSum& exact, double t) {
 double RayTracer::polish(const ExactSum& ids, double lo, double hi, double g_lo,
                          double g_hi) {
   ++stats_.roots;
-  return core::refine_bracket(lo, hi, g_lo, g_hi,
+  return refine_bracket(lo, hi, g_lo, g_hi,
                               [&](double t) { return exact_minus_threshold(ids, t); });
 }
 

@@ -310,7 +310,7 @@ bool Marcher::bracket(const Sample& a, const Sample& b) {
   if (mode_ != RootMode::any) {
     ++stats_.roots;
     const Guess guess = hermite_root(a, b);
-    t = core::refine_bracket(a.t, b.t, a.g, b.g,
+    t = refine_bracket(a.t, b.t, a.g, b.g,
                              [&](double x) { return field_.value_minus_threshold(x); },
                              guess.t, guess.slope);
   }
