@@ -15,9 +15,9 @@
 
 #include "app/command_step.hpp"
 #include "app/declared_object.hpp"
-#include "app/image_reader.hpp"
+#include "app/plugin_image_reader.hpp"
 #include "render/function_sources.hpp"
-#include "app/object_queries.hpp"
+#include "app/geometry_object_queries.hpp"
 #include "app/soup_triangles.hpp"
 #include "implicit/placed_field.hpp"
 #include "implicit/mesh_field.hpp"

@@ -10,9 +10,9 @@
 
 #include "app/command_step.hpp"
 #include "app/declared_object.hpp"
-#include "app/image_reader.hpp"
+#include "app/plugin_image_reader.hpp"
 #include "render/function_sources.hpp"
-#include "app/object_queries.hpp"
+#include "app/geometry_object_queries.hpp"
 #include "app/short_number.hpp"
 #include "app/size_check.hpp"
 #include "app/usage_error.hpp"

@@ -15,9 +15,9 @@
 
 #include "app/command_step.hpp"
 #include "app/frame_names.hpp"
-#include "app/image_reader.hpp"
+#include "app/plugin_image_reader.hpp"
 #include "render/function_sources.hpp"
-#include "app/object_queries.hpp"
+#include "app/geometry_object_queries.hpp"
 #include "app/size_check.hpp"
 #include "app/video.hpp"
 #include "geometry/world.hpp"

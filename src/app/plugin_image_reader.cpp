@@ -1,4 +1,4 @@
-#include "app/image_reader.hpp"
+#include "app/plugin_image_reader.hpp"
 
 #include "core/image_plugin.hpp"
 #include "core/png_palette.hpp"

@@ -1,4 +1,4 @@
-#include "app/object_queries.hpp"
+#include "app/geometry_object_queries.hpp"
 
 #include "geometry/world.hpp"
 #include "scene/object.hpp"
