@@ -2,7 +2,7 @@
 // What a convolution object is made of, as plain records: skeleton primitives, each with its
 // own strength and support radius, summed into one field F and its surface F = T. Negative
 // strengths subtract. This is the description a scene (or `convray quick`) fills in; the
-// traceable, queryable form is ConvolutionSurface.
+// traceable, queryable form is implicit::Surface (implicit/surface.hpp, implicit::make_surface).
 #include <memory>
 #include <optional>
 #include <cstdint>
