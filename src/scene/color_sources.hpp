@@ -3,7 +3,8 @@
 // (`function { pigment { P } }`, `function { pattern { P } }`, functions.inc's f_noise3d):
 // only the renderer evaluates those, and the language does not link the renderer. The program
 // (app/) hands the parser the renderer's (render/function_sources.hpp) in
-// sdl::ParseOptions::color_sources, as it does for sdl::ObjectQueries; without one such a function is unsupported where it is called.
+// sdl::ParseOptions::color_sources, as it does for sdl::ObjectQueries; without one, such a
+// function is unsupported where it is called.
 #include <memory>
 
 #include "scene/function.hpp"
