@@ -8,25 +8,13 @@
 #include "core/bracket_refine.hpp"
 #include "field/triangle_batch.hpp"
 #include "field/triangle_quartic.hpp"
+#include "implicit/line_curvature.hpp"
 
 namespace convray::implicit {
 namespace {
 
 using Impl = ConvolutionSurface::Impl;
 
-// |K''| <= 8 / R^2 for K(r) = (1 - r^2/R^2)^2 along any line (see the header).
-constexpr double kKernelCurvature = 8.0;
-// A triangle's |F''| along a line is at most the integral of |u.H.u| over its part of the
-// kernel's ball, H the kernel's Hessian: with s = |x|^2/R^2, u.H.u = -4(1-s)/R^2 + 8(u.x)^2/R^4
-// lies in [-4(1-s), 12s - 4]/R^2, and over the disk where the triangle's plane meets the ball
-// (area element pi R^2 ds) the integral of max(4 - 4s, 12s - 4)/R^2 is at most 4 pi (at height
-// 0). Pointwise the bound is 8/R^2, so a triangle contributes min(8 area/R^2, 4 pi): half the
-// old 8/R^2 min(area, pi R^2) for triangles wider than the ball.
-constexpr double kPlaneCurvature = 4.0 * kPi;
-// Distance kernels of a segment (POV-Ray's blob cylinders): K(u) with u = d^2 the squared
-// distance to a convex set, 0 <= u'' <= 2 and |u'| <= 2d, so |K''| <= |K_uu| u'^2 + |K_u| u''
-// <= (2/R^4)(4R^2) + (2/R^2) 2 = 12 / R^2.
-constexpr double kDistanceKernelCurvature = 12.0;
 // Windows are not halved below this fraction of the smallest radius (the field only touches T).
 constexpr double kResolution = 1e-3;
 // The march steps at least this fraction of the smallest radius; such a step is not certified
@@ -59,14 +47,19 @@ class ClusterField {
   Sample sample(double t);  // value and slope, in units of T
   double value_minus_threshold(double t);  // F / T - 1
   Vec3 gradient(double t);
-  // Sum of the curvature bounds of the primitives whose support meets [a, b], in units of T.
-  double curvature(double a, double b) const;
+  // The sum of how far the primitives whose support meets [a, b] may bend up there (or down:
+  // `upward` false), in units of T.
+  double curvature(double a, double b, bool upward) const;
   double reach() const { return reach_; }
 
  private:
   struct Member {
-    double enter, exit, curvature;
+    double enter, exit;
     uint32_t id;
+  };
+  struct Bending {  // a member's curvature along this ray
+    double enter, exit;
+    LineCurvature curvature;
   };
   struct Batch {
     const Impl::Group* group = nullptr;
@@ -89,12 +82,12 @@ class ClusterField {
   double reach_ = -kInfinity;
   double origin_t_ = 0.0;  // where the quartics' parameter s is 0
   // Storage kept from ray to ray (a cluster is marched by one thread at a time).
-  static thread_local std::vector<Member> members_;  // every primitive, for the curvature
-  static thread_local std::vector<Member> others_;   // those outside the batches
+  static thread_local std::vector<Bending> members_;  // every primitive, for the curvature
+  static thread_local std::vector<Member> others_;    // those outside the batches
   static thread_local std::vector<Batch> batches_;
 };
 
-thread_local std::vector<ClusterField::Member> ClusterField::members_;
+thread_local std::vector<ClusterField::Bending> ClusterField::members_;
 thread_local std::vector<ClusterField::Member> ClusterField::others_;
 thread_local std::vector<ClusterField::Batch> ClusterField::batches_;
 
@@ -105,15 +98,18 @@ ClusterField::ClusterField(const Impl& s, const Ray& ray,
   members_.clear();
   others_.clear();
   for (const accel::SupportInterval& iv : cluster) {
-    const Member m{iv.enter, iv.exit, curvature_bound(s, iv.primitive), iv.primitive};
-    members_.push_back(m);
     reach_ = std::max(reach_, iv.exit);
     if (iv.primitive < s.triangle_base) {
-      others_.push_back(m);
+      members_.push_back({iv.enter, iv.exit, LineCurvature(s, iv.primitive, ray)});
+      others_.push_back({iv.enter, iv.exit, iv.primitive});
       continue;
     }
     const uint32_t triangle = iv.primitive - s.triangle_base;
-    add_triangle(batch_for(s.group_of(triangle)), s.triangles[triangle], iv.enter, iv.exit);
+    const Impl::Group& group = s.group_of(triangle);
+    const field::Triangle& corners = s.triangles[triangle];
+    members_.push_back(
+        {iv.enter, iv.exit, LineCurvature(corners, group.strength, group.radius, ray)});
+    add_triangle(batch_for(group), corners, iv.enter, iv.exit);
   }
   for (size_t k = 0; k < batches_used_; ++k) batches_[k].batch.assign(batches_[k].triangles);
 }
@@ -220,11 +216,12 @@ double ClusterField::value_minus_threshold(double t) {
 
 Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t, nullptr).gradient; }
 
-double ClusterField::curvature(double a, double b) const {
+double ClusterField::curvature(double a, double b, bool upward) const {
   double sum = 0.0;
-  for (const Member& m : members_) {
+  for (const Bending& m : members_) {
     if (m.enter > b) break;  // the cluster is sorted by entry
-    if (m.exit >= a) sum += m.curvature;
+    if (m.exit < a) continue;
+    sum += upward ? m.curvature.up(a, b) : m.curvature.down(a, b);
   }
   return sum / s_.threshold;
 }
@@ -322,7 +319,8 @@ bool Marcher::bracket(const Sample& a, const Sample& b) {
 // a and b on the same side of T: halve until the envelopes exclude a crossing pair, or the
 // window is narrower than the resolution.
 bool Marcher::search_window(const Sample& a, const Sample& b) {
-  if (window_excluded(a, b, field_.curvature(a.t, b.t))) return false;
+  // Below T only how far F may bend up towards it counts; above it, how far down.
+  if (window_excluded(a, b, field_.curvature(a.t, b.t, a.g < 0.0))) return false;
   if (b.t - a.t < kResolution * s_.min_radius) return false;
   ++stats_.subdivisions;
   const Sample mid = field_.sample(0.5 * (a.t + b.t));
@@ -343,7 +341,8 @@ double Marcher::certified_reach(const Sample& a, double to, double min_step,
                                 double max_step) const {
   double best = 0.0;
   for (double window = min_step;; window = std::min(2.0 * window, max_step)) {
-    const double step = certified_step(a, field_.curvature(a.t, std::min(to, a.t + window)));
+    const double end = std::min(to, a.t + window);
+    const double step = certified_step(a, field_.curvature(a.t, end, a.g < 0.0));
     if (step < window) return std::max(best, step);
     best = window;
     if (window >= max_step || a.t + window >= to) return best;
@@ -374,32 +373,6 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
 }
 
 }  // namespace
-
-double curvature_bound(const Impl& s, uint32_t id) {
-  if (id < s.capsule_base) {
-    const double r = s.sphere_radii[id];
-    return std::abs(s.sphere_strengths[id]) * kKernelCurvature / (r * r);
-  }
-  if (id < s.arc_base) {
-    const uint32_t i = id - s.capsule_base;
-    const double r = s.capsule_radii[i];
-    if (s.capsule_is_blob[i]) return std::abs(s.capsule_strengths[i]) * kDistanceKernelCurvature / (r * r);
-    const double length = std::min(glm::length(s.capsules[i].b - s.capsules[i].a), 2.0 * r);
-    return std::abs(s.capsule_strengths[i]) * kKernelCurvature * length / (r * r);
-  }
-  if (id < s.triangle_base) {
-    const uint32_t i = id - s.arc_base;
-    const double r = s.arc_radii[i];
-    const double length = std::min(s.arcs[i].angle * s.arcs[i].radius, 2.0 * kPi * r);
-    return std::abs(s.arc_strengths[i]) * kKernelCurvature * length / (r * r);
-  }
-  const uint32_t triangle = id - s.triangle_base;
-  const Impl::Group& g = s.group_of(triangle);
-  const field::Triangle& tri = s.triangles[triangle];
-  const double area = 0.5 * glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a));
-  const double r = g.radius;
-  return std::abs(g.strength) * std::min(kKernelCurvature * area / (r * r), kPlaneCurvature);
-}
 
 void march_cluster(const Impl& surface, const Ray& ray,
                    std::span<const accel::SupportInterval> cluster, double tmin, double tmax,

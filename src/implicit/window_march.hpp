@@ -4,19 +4,16 @@
 //
 // The field F of the primitives whose support the ray crosses is sampled with its slope,
 // F(t) and F'(t), every triangle of a mesh through the SIMD batch at once. Between samples
-// a certified bound M on |F''| (each primitive's own, summed over those whose support meets
-// the window) says where F cannot reach T:
+// certified one-sided bounds on F'' (each primitive's own over the window, summed over those
+// whose support meets it: line_curvature.hpp) say where F cannot reach T. Below T only how
+// far F may bend up counts (U), above T only how far down (D); with M the one that counts:
 //   - from one sample, F stays on its side of T for a step h with
 //     |F(a) - T| > |F'(a)| h + M h^2 / 2 (the step the march takes, where it is not tiny);
 //   - between two samples on the same side of T, the two Taylor envelopes
 //     F(a) + F'(a) s +- M s^2 / 2 and F(b) - F'(b) s' +- M s'^2 / 2 bound F; a window where
 //     neither can reach T holds no pair of crossings, and one where they can is halved.
 // A sign change between samples brackets a root, which is refined on the exact field
-// (core/bracket_refine.hpp). The bound on |F''| follows from the kernel K(r) = (1 - r^2/R^2)^2,
-// whose second derivative along any line is at most 8/R^2 in size: a triangle contributes at
-// most 8/R^2 times its area, and at most 4 pi (the Hessian integrated over the disk where its
-// plane meets the ball; window_march.cpp), a segment 8/R^2 times its length
-// within it (at most 2R), a point 8/R^2 (curvature_bound).
+// (core/bracket_refine.hpp).
 //
 // Windows narrower than 10^-3 of the smallest radius are not halved further: there the field
 // only touches T, as the fitted path and the reference tracer also accept.
@@ -38,8 +35,5 @@ void march_cluster(const ConvolutionSurface::Impl& surface, const Ray& ray,
                    std::span<const accel::SupportInterval> cluster, double tmin, double tmax,
                    RootMode mode, std::vector<double>& out, TraceStats& stats,
                    std::optional<Vec3>* first_gradient);
-
-// A bound on |d^2 f / dt^2| along any unit-speed line for primitive `id`, strength included.
-double curvature_bound(const ConvolutionSurface::Impl& surface, uint32_t id);
 
 }  // namespace convray::implicit

@@ -1,0 +1,152 @@
+#include "implicit/line_curvature.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <array>
+
+namespace convray::implicit {
+namespace {
+
+// The range, mean and variance of u.(q - origin) over a point, a segment or a triangle given
+// by its N corners (u.x is linear in q: its extremes are at corners, its mean is theirs, and
+// its variance is the sum over corner pairs of the squared difference, / 12 on a segment,
+// / 36 on a triangle).
+struct Extent {
+  double lo = 0.0, hi = 0.0, mean = 0.0, var = 0.0;
+};
+template <size_t N>
+Extent extent_along(const Ray& ray, const std::array<Vec3, N>& corners) {
+  double along[N];
+  for (size_t k = 0; k < N; ++k) along[k] = glm::dot(corners[k] - ray.origin, ray.direction);
+  Extent e{along[0], along[0], along[0], 0.0};
+  double pairs = 0.0;
+  for (size_t i = 1; i < N; ++i) {
+    e.lo = std::min(e.lo, along[i]);
+    e.hi = std::max(e.hi, along[i]);
+    e.mean += along[i];
+    for (size_t j = 0; j < i; ++j) pairs += (along[i] - along[j]) * (along[i] - along[j]);
+  }
+  e.mean *= 1.0 / double(N);
+  e.var = pairs * (N == 3 ? 1.0 / 36.0 : 1.0 / 12.0);
+  return e;
+}
+
+}  // namespace
+
+LineCurvature::LineCurvature(const ConvolutionSurface::Impl& s, uint32_t id, const Ray& ray) {
+  double strength = 0.0, radius = 1.0;
+  Extent extent;
+  measure_ = 1.0;
+  has_extent_ = has_moments_ = true;
+  if (id < s.capsule_base) {  // points and blob spheres: K itself
+    strength = s.sphere_strengths[id];
+    radius = s.sphere_radii[id];
+    extent = extent_along(ray, std::array<Vec3, 1>{s.sphere_centers[id]});
+  } else if (id < s.arc_base) {
+    const uint32_t i = id - s.capsule_base;
+    const field::Segment& seg = s.capsules[i];
+    strength = s.capsule_strengths[i];
+    radius = s.capsule_radii[i];
+    extent = extent_along(ray, std::array<Vec3, 2>{seg.a, seg.b});
+    // A blob cylinder is K of the squared distance d2 to the segment: K'' = K_dd d2'^2 +
+    // K_d d2'' with 0 <= K_dd = 2/R^4, -2/R^2 <= K_d <= 0, |d2'| <= 2 |u.x| (x from the
+    // nearest point) and 0 <= d2'' <= 2: up to 8 (u.x)^2/R^4, down to 4/R^2, as a point.
+    if (s.capsule_is_blob[i]) {
+      has_moments_ = false;
+    } else {
+      measure_ = std::min(glm::length(seg.b - seg.a), 2.0 * radius);
+    }
+  } else if (id < s.triangle_base) {
+    const uint32_t i = id - s.arc_base;
+    strength = s.arc_strengths[i];
+    radius = s.arc_radii[i];
+    measure_ = std::min(s.arcs[i].angle * s.arcs[i].radius, 2.0 * kPi * radius);
+    has_extent_ = has_moments_ = false;
+  } else {
+    const uint32_t i = id - s.triangle_base;
+    const ConvolutionSurface::Impl::Group& g = s.group_of(i);
+    *this = LineCurvature(s.triangles[i], g.strength, g.radius, ray);
+    return;
+  }
+  lo_ = extent.lo;
+  hi_ = extent.hi;
+  mean_ = extent.mean;
+  var_ = extent.var;
+  weight_ = std::abs(strength);
+  radius_ = radius;
+  r2_ = radius * radius;
+  flipped_ = strength < 0.0;
+}
+
+LineCurvature::LineCurvature(const field::Triangle& tri, double strength, double radius,
+                             const Ray& ray)
+    : weight_(std::abs(strength)),
+      radius_(radius),
+      r2_(radius * radius),
+      measure_(0.5 * glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a))),
+      has_extent_(true),
+      has_moments_(true),
+      limit_(2.0 * kPi),
+      flipped_(strength < 0.0),
+      triangle_(measure_ > 0.0),  // no area, no field
+      triangle_corners_(&tri),
+      ray_(&ray) {
+  const Extent extent = extent_along(ray, std::array<Vec3, 3>{tri.a, tri.b, tri.c});
+  lo_ = extent.lo;
+  hi_ = extent.hi;
+  mean_ = extent.mean;
+  var_ = extent.var;
+}
+
+void LineCurvature::prepare_triangle() const {
+  const field::Triangle& tri = *triangle_corners_;
+  const Ray& ray = *ray_;
+  const Vec3 corners[3] = {tri.a, tri.b, tri.c};
+  const Vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
+  height_[0] = glm::dot(n, ray.origin - tri.a);
+  height_[1] = glm::dot(n, ray.direction);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& v = corners[k];
+    const Vec3 edge = corners[(k + 1) % 3] - v;
+    const Vec3 inward = glm::normalize(glm::cross(n, edge));  // in the plane, into the triangle
+    outside_[k][0] = -glm::dot(inward, ray.origin - v);
+    outside_[k][1] = -glm::dot(inward, ray.direction);
+  }
+  prepared_ = true;
+}
+
+double LineCurvature::area_within(double a, double b) const {
+  if (!prepared_) prepare_triangle();
+  const double mid = 0.5 * (a + b), reach = radius_ + 0.5 * (b - a);
+  const double height = height_[0] + height_[1] * mid;
+  const double rho2 = reach * reach - height * height;
+  if (!(rho2 > 0.0)) return 0.0;
+  double e = -kInfinity;
+  for (const auto& edge : outside_) e = std::max(e, edge[0] + edge[1] * mid);
+  if (e <= 0.0) return std::min(measure_, kPi * rho2);  // the foot is inside the triangle
+  if (e * e >= rho2) return 0.0;
+  return std::min(measure_, 2.0 * (std::sqrt(rho2) - e) * std::sqrt(rho2 - e * e));
+}
+
+// A lower bound on |x|^2 / R^2 between a point of the window and a point of the triangle:
+// the squared distance to the plane plus that past an edge, each at least its smaller value
+// at the window's ends (both are linear in t; where the height changes sign it is 0).
+double LineCurvature::nearest_s(double a, double b) const {
+  if (!prepared_) prepare_triangle();
+  const double ha = height_[0] + height_[1] * a, hb = height_[0] + height_[1] * b;
+  const double h = (ha > 0.0) != (hb > 0.0) ? 0.0 : std::min(std::abs(ha), std::abs(hb));
+  double e = 0.0;
+  for (const auto& edge : outside_) {
+    e = std::max(e, std::min(edge[0] + edge[1] * a, edge[0] + edge[1] * b));
+  }
+  return std::min(1.0, (h * h + e * e) / r2_);
+}
+
+double LineCurvature::bend_down(double a, double b) const {
+  if (!triangle_) return weight_ * 4.0 * measure_ / r2_;
+  // u.H.u >= -4 (1 - s) / R^2, and s is at least nearest_s over the triangle.
+  const double within = area_within(a, b) * (1.0 - nearest_s(a, b));
+  return weight_ * std::min(4.0 * within / r2_, limit_);
+}
+
+}  // namespace convray::implicit

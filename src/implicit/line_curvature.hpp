@@ -1,0 +1,116 @@
+#pragma once
+// One-sided bounds on how fast a primitive's field bends along a line: the window march's
+// certificate (window_march.hpp). For the kernel K(x) = (1 - s)^2, s = |x|^2/R^2, the second
+// derivative along a unit direction u is
+//   u.H.u = 8 (u.x)^2 / R^4 - 4 (1 - s) / R^2        (|x| < R; 0 outside)
+// so it bends up by at most 8 (u.x)^2 / R^4 and down by at most 4 (1 - s) / R^2. A primitive's
+// field is K integrated over its skeleton (or, for blob cylinders, K of the distance), so:
+//   up   <= 8 c^2 / R^4 times its measure within R,   c = the largest |u.x| over the window
+//   down <= 4 / R^2  times its measure within R
+// and for a triangle each is also at most 2 pi: over the disk where a plane meets the ball,
+// the integral of 8 (u.x)^2 / R^4 is 8 pi (h^2 u_n^2 (R^2-h^2) + |u_t|^2 (R^2-h^2)^2 / 4) / R^4
+// <= 2 pi, and that of 4 (1 - s) / R^2 is 2 pi (1 - h^2/R^2)^2 <= 2 pi (h the plane's distance,
+// u_n and u_t the parts of u along its normal and in it). The plane's own field
+// (pi R^2 / 3)(1 - h^2/R^2)^3 has F'' = -2 pi at h = 0, so the downward bound is reached.
+//
+// c comes from the primitive's extent along the line: for t in the window [a, b] and q on the
+// skeleton, u.x = t - u.(q - origin), so |u.x| <= max(|a - hi|, |b - lo|) with [lo, hi] the
+// skeleton's range of u.(q - origin) (and never more than R, inside the ball). Better still
+// for a tilted triangle or segment, the integral of (u.x)^2 over the whole skeleton is its
+// measure times (t - mean)^2 + var, mean and var those of u.(q - origin) over the skeleton
+// (a linear function: var = sum over corner pairs of (difference)^2 / 36 on a triangle, / 12
+// on a segment), largest at an end of the window. Near a surface the rays that approach or
+// leave it see both well below R^2, where the old symmetric bound 8/R^2 per unit measure
+// (4 pi per wide triangle) was up to four times looser.
+//
+// A triangle's measure within R is its area within the ball of radius R + w/2 around the
+// window's middle (w the window's length), which holds every point's ball. That ball meets
+// the triangle's plane in a disk of radius rho around the middle's foot; where the foot lies
+// a distance e outside one of the triangle's edges, the triangle keeps to the disk's segment
+// beyond that edge's line, of area at most 2 (rho - e) sqrt(rho^2 - e^2) (its bounding
+// rectangle). Where triangles are wider than R, the few that tile the disk then count for
+// their part of it each, not for the whole disk each. Downwards, the weight 4 (1 - s) / R^2
+// is also at most its value at the triangle's nearest possible point (the window's least
+// height above the plane and least distance past an edge).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "core/ray.hpp"
+#include "implicit/surface_impl.hpp"
+
+namespace convray::implicit {
+
+// How far a field may bend above and below its tangent over a window, both >= 0 and with the
+// strength included: F(a + s) <= F(a) + F'(a) s + up s^2 / 2 and >= ... - down s^2 / 2.
+struct CurvatureBounds {
+  double up = 0.0, down = 0.0;
+};
+
+// A primitive's curvature along one line, prepared once per ray for any window of it.
+class LineCurvature {
+ public:
+  // `ray` must outlive this (a triangle's plane and edges are measured against it lazily).
+  LineCurvature(const ConvolutionSurface::Impl& surface, uint32_t id, const Ray& ray);
+  // A triangle of a mesh with this strength and radius (what the surface's id gives).
+  LineCurvature(const field::Triangle& triangle, double strength, double radius, const Ray& ray);
+
+  // How far the field may bend up over the window t in [a, b] of the line, and down.
+  double up(double a, double b) const { return flipped_ ? bend_down(a, b) : bend_up(a, b); }
+  double down(double a, double b) const { return flipped_ ? bend_up(a, b) : bend_down(a, b); }
+  CurvatureBounds over(double a, double b) const { return {up(a, b), down(a, b)}; }
+
+ private:
+  // The same for the skeleton's integral of K with a positive strength.
+  double bend_up(double a, double b) const;
+  double bend_down(double a, double b) const;
+  // The plane and edges of the triangle, along the line: made when first asked for (most
+  // windows never need them).
+  void prepare_triangle() const;
+  // A bound on the triangle's area within R of the window (line_curvature.cpp).
+  double area_within(double a, double b) const;
+  double nearest_s(double a, double b) const;
+
+  double weight_ = 0.0;            // |strength|
+  double radius_ = 0.0, r2_ = 0.0;  // R, R^2
+  double measure_ = 0.0;           // length or area within R (a point's: 1)
+  double lo_ = 0.0, hi_ = 0.0;     // the skeleton's range of u.(q - origin)
+  double mean_ = 0.0, var_ = 0.0;  // its mean and variance over the skeleton
+  bool has_extent_ = false;        // lo_, hi_ bound u.x (not for arcs)
+  bool has_moments_ = false;       // mean_, var_ give the integral of (u.x)^2 (not for blob
+                                   // cylinders, whose kernel is not an integral)
+  double limit_ = kInfinity;       // 2 pi for a triangle, on each side
+  bool flipped_ = false;           // a negative strength swaps the two sides
+  // Triangles: the distance to the plane and the outward distances past each edge of the
+  // foot of p(t), each linear in t: value at t = 0 and slope.
+  bool triangle_ = false;
+  const field::Triangle* triangle_corners_ = nullptr;
+  const Ray* ray_ = nullptr;
+  mutable bool prepared_ = false;
+  mutable double height_[2] = {0.0, 0.0};
+  mutable double outside_[3][2] = {};
+};
+
+// Inline: the march sums it over every primitive near each window it weighs.
+inline double LineCurvature::bend_up(double a, double b) const {
+  // The integral of (u.x)^2 over the skeleton's part within R of a window point.
+  double second_moment = kInfinity;
+  if (has_moments_) {
+    const double spread = std::max((a - mean_) * (a - mean_), (b - mean_) * (b - mean_)) + var_;
+    second_moment = measure_ * spread;
+  }
+  double c2 = r2_;
+  if (has_extent_) {
+    const double c = std::max(std::abs(a - hi_), std::abs(b - lo_));
+    c2 = std::min(c * c, r2_);
+  }
+  // Only a triangle's area within reach can do better than its whole area, and only where
+  // the bound is not already below what that area allows.
+  const double whole = measure_ * c2;
+  if (whole < second_moment) {
+    second_moment = triangle_ && 8.0 * whole > limit_ * r2_ * r2_ ? area_within(a, b) * c2 : whole;
+  }
+  return weight_ * std::min(8.0 * second_moment / (r2_ * r2_), limit_);
+}
+
+}  // namespace convray::implicit
