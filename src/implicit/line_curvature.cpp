@@ -54,7 +54,8 @@ LineCurvature::LineCurvature(const ConvolutionSurface::Impl& s, uint32_t id, con
     if (s.capsule_is_blob[i]) {
       has_moments_ = false;
     } else {
-      measure_ = std::min(glm::length(seg.b - seg.a), 2.0 * radius);
+      length_ = glm::length(seg.b - seg.a);
+      measure_ = std::min(length_, 2.0 * radius);
     }
   } else if (id < s.triangle_base) {
     const uint32_t i = id - s.arc_base;
@@ -84,6 +85,7 @@ LineCurvature::LineCurvature(const field::Triangle& tri, double strength, double
       radius_(radius),
       r2_(radius * radius),
       measure_(0.5 * glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a))),
+      length_(measure_),
       has_extent_(true),
       has_moments_(true),
       limit_(2.0 * kPi),

@@ -74,6 +74,7 @@ class LineCurvature {
   double weight_ = 0.0;            // |strength|
   double radius_ = 0.0, r2_ = 0.0;  // R, R^2
   double measure_ = 0.0;           // length or area within R (a point's: 1)
+  double length_ = 1.0;            // the whole length or area, for mean_ and var_
   double lo_ = 0.0, hi_ = 0.0;     // the skeleton's range of u.(q - origin)
   double mean_ = 0.0, var_ = 0.0;  // its mean and variance over the skeleton
   bool has_extent_ = false;        // lo_, hi_ bound u.x (not for arcs)
@@ -97,7 +98,7 @@ inline double LineCurvature::bend_up(double a, double b) const {
   double second_moment = kInfinity;
   if (has_moments_) {
     const double spread = std::max((a - mean_) * (a - mean_), (b - mean_) * (b - mean_)) + var_;
-    second_moment = measure_ * spread;
+    second_moment = length_ * spread;  // over the whole skeleton, not only within R
   }
   double c2 = r2_;
   if (has_extent_) {

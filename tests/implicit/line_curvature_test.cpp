@@ -95,6 +95,39 @@ TEST(LineCurvature, BoundsHoldOverRandomWindowsForEveryKind) {
 // (pi R^2 / 3)(1 - h^2/R^2)^3 at height h: along the normal F'' = -2 pi (1 - x)(1 - 5x),
 // x = h^2/R^2, which is -2 pi at h = 0 (the downward bound, 2 pi, is reached) and at most
 // 1.6 pi, at x = 0.6 (within the upward bound, 2 pi). Random directions stay within both.
+// A segment much longer than 2R, nearly across the line, that the line passes close to near
+// one of its ends: there u.x is nearly the same on the part within R, while over the whole
+// segment it averages out, so the moments of the whole skeleton bound the integral of (u.x)^2
+// over the part within R only when weighed by the whole length (the part's length with the
+// whole's mean square is up to three times too small here).
+TEST(LineCurvature, LongSegmentNearItsEndUsesTheWholeSkeletonsMoments) {
+  const double R = 1.0, L = 20.0;
+  const double slope = 1.8 * R / L;  // u.d: u.x changes by 1.8 R along the whole segment
+  const Vec3 d(slope, std::sqrt(1.0 - slope * slope), 0.0);
+  int checked = 0;
+  double tightest = 0.0;
+  for (double offset = 0.5; offset <= 0.95; offset += 0.05) {
+    // The ray along x passes offset R (along x) from the point 0.5 R short of the end.
+    const Vec3 near_end = Vec3(10.0 + offset * R, 0.0, 0.0);
+    const Vec3 b = near_end + 0.5 * R * d, a = b - L * d;
+    scene::ConvolutionObject object;
+    object.segments.push_back({{a, b}, {1.0, R}});
+    object.threshold = 0.5;
+    const ConvolutionSurface surface(object);
+    const ConvolutionSurface::Impl& s = surface.impl();
+    const Ray ray{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
+    for (double t = 9.0; t <= 11.0; t += 0.05) {
+      const double up = LineCurvature(s, 0, ray).up(t - 0.01, t + 0.01);
+      const double second = second_difference(s, 0, ray, t);
+      EXPECT_LE(second, up * (1.0 + 1e-4) + 1e-6) << "offset " << offset << ", t " << t;
+      if (up > 0.0) tightest = std::max(tightest, second / up);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 300);
+  EXPECT_GT(tightest, 0.2);  // the configuration does load the bound
+}
+
 TEST(LineCurvature, WideTriangleAgainstThePlanesClosedForm) {
   const double R = 0.2;
   scene::ConvolutionObject object;
