@@ -10,6 +10,7 @@
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
 #include "core/box.hpp"
+#include "scene/texture_opacity.hpp"
 
 namespace convray::geometry {
 
@@ -46,6 +47,11 @@ ImplicitShape::ImplicitShape(const scene::Implicit& record, SurfaceInfoPtr surfa
       is_blob_(record.is_blob),
       object_surface_(std::move(surface)) {
   if (!record.component_textures.empty()) index_components(record);
+  const auto blocks = [](const SurfaceInfoPtr& info) {
+    return info && !info->no_shadow && info->texture && scene::always_opaque(*info->texture);
+  };
+  blocks_light_ = blocks(object_surface_) &&
+                  std::all_of(component_surfaces_.begin(), component_surfaces_.end(), blocks);
 }
 
 void ImplicitShape::index_components(const scene::Implicit& record) {
@@ -127,6 +133,13 @@ std::optional<Crossing> ImplicitShape::first_crossing(const Ray& ray, double tmi
   crossings(ray, tmin, tmax, all, stats);
   if (all.empty()) return std::nullopt;
   return all.front();
+}
+
+bool ImplicitShape::any_crossing(const Ray& ray, double tmin, double tmax,
+                                 TraceStats& stats) const {
+  double t0 = tmin, t1 = tmax;
+  if (!clip_to_box(ray, surface_->bounds(), t0, t1)) return false;
+  return surface_->occluded(ray, t0, t1, stats);
 }
 
 bool ImplicitShape::inside(const Vec3& p) const {

@@ -34,6 +34,9 @@ class ImplicitShape final : public Shape {
   std::optional<Crossing> first_crossing(const Ray& ray, double tmin, double tmax,
                                          TraceStats& stats) const override;
   bool inside(const Vec3& p) const override;
+  bool blocks_light() const override { return blocks_light_; }
+  // The surface's any-hit query (implicit::Surface::occluded): no root refined, no normal.
+  bool any_crossing(const Ray& ray, double tmin, double tmax, TraceStats& stats) const override;
 
   const implicit::Surface& surface() const { return *surface_; }
   // The surface description a crossing at p takes (the dominant component's).
@@ -49,6 +52,7 @@ class ImplicitShape final : public Shape {
   // kind and index (the object's where the component has none), and the descriptions made.
   std::vector<std::vector<const SurfaceInfo*>> surface_of_;
   std::vector<SurfaceInfoPtr> component_surfaces_;
+  bool blocks_light_ = false;  // every surface description casts shadows and is opaque
 };
 
 }  // namespace convray::geometry

@@ -47,6 +47,17 @@ class Shape {
   // Whether p is inside the solid (on the boundary: either answer).
   virtual bool inside(const Vec3& p) const = 0;
 
+  // Whether every crossing of this shape stops a shadow ray outright (each of its surfaces
+  // casts shadows with a texture opaque everywhere), so that any_crossing() settles a shadow
+  // ray. Shapes whose crossings cost much to refine say so (implicit surfaces); for the rest
+  // the shadow ray follows first_crossing() as for transparent surfaces.
+  virtual bool blocks_light() const { return false; }
+  // Whether some crossing lies in (tmin, tmax), found without refining where it is or its
+  // normal where the shape can (shadow rays). The default asks first_crossing().
+  virtual bool any_crossing(const Ray& ray, double tmin, double tmax, TraceStats& stats) const {
+    return first_crossing(ray, tmin, tmax, stats).has_value();
+  }
+
   // World-space bounds of the points where inside() can be true (CSG and clipped_by bound
   // what they keep with them): bounds() for closed solids, infinite for half-spaces (plane,
   // disc) and inverted shapes, empty for open surfaces that have no inside.

@@ -42,6 +42,13 @@ std::optional<Crossing> TransformedShape::first_crossing(const Ray& ray, double 
   return crossing;
 }
 
+bool TransformedShape::any_crossing(const Ray& ray, double tmin, double tmax,
+                                    TraceStats& stats) const {
+  double stretch = 1.0;
+  const Ray local = child_ray(ray, stretch);
+  return child_->any_crossing(local, tmin * stretch, tmax * stretch, stats);
+}
+
 bool TransformedShape::inside(const Vec3& p) const {
   return child_->inside(transform_.inverse_point(p));
 }

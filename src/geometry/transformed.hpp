@@ -18,6 +18,8 @@ class TransformedShape final : public Shape {
                                          TraceStats& stats) const override;
   bool inside(const Vec3& p) const override;
   Box3 inside_bounds() const override;
+  bool blocks_light() const override { return child_->blocks_light(); }
+  bool any_crossing(const Ray& ray, double tmin, double tmax, TraceStats& stats) const override;
 
  private:
   // The ray in the child's space with a unit direction; `stretch` is how much longer the

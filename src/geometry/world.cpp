@@ -43,6 +43,7 @@ World::World(const scene::Scene& scene, implicit::SupportCache* cache, implicit:
     const size_t id = shapes_.size();
     index->inside_boxes.push_back(shape->inside_bounds());
     bounds_.push_back(box);
+    blocks_light_.push_back(shape->blocks_light() ? 1 : 0);
     shapes_.push_back(std::move(shape));
     if (is_empty(box)) continue;  // no surface at all: never hit
     if (is_finite(box)) {
@@ -63,10 +64,12 @@ World::World(World&&) noexcept = default;
 Box3 World::bounds() const { return index_->bounds; }
 
 std::optional<Crossing> World::first_hit(const Ray& ray, double tmin, double tmax,
-                                         TraceStats& stats) const {
+                                         TraceStats& stats, Objects objects) const {
   std::optional<Crossing> nearest;
   double reach = tmax;
+  const bool skip_blockers = objects == Objects::letting_light_through;
   auto ask = [&](size_t id, double& limit) {
+    if (skip_blockers && blocks_light_[id]) return;
     if (auto c = shapes_[id]->first_crossing(ray, tmin, limit, stats)) {
       nearest = c;
       limit = c->t;  // only nearer objects matter now
@@ -76,6 +79,32 @@ std::optional<Crossing> World::first_hit(const Ray& ray, double tmin, double tma
   index_->bvh.traverse(ray, tmin, reach,
                        [&](uint32_t k, double& limit) { ask(index_->bounded[k], limit); });
   return nearest;
+}
+
+bool World::blocked(const Ray& ray, double tmin, double tmax, TraceStats& stats) const {
+  bool found = false;
+  auto ask = [&](size_t id, double& limit) {
+    if (found || !blocks_light_[id]) return;
+    if (shapes_[id]->any_crossing(ray, tmin, tmax, stats)) {
+      found = true;
+      limit = -kInfinity;  // ends the traversal
+    }
+  };
+  double reach = tmax;
+  for (size_t id : index_->unbounded) ask(id, reach);
+  if (!found) index_->bvh.traverse(ray, tmin, reach, [&](uint32_t k, double& limit) {
+    ask(index_->bounded[k], limit);
+  });
+  return found;
+}
+
+bool World::blocked_brute_force(const Ray& ray, double tmin, double tmax,
+                                TraceStats& stats) const {
+  for (size_t id = 0; id < shapes_.size(); ++id) {
+    if (!blocks_light_[id]) continue;
+    if (shapes_[id]->first_crossing(ray, tmin, tmax, stats)) return true;
+  }
+  return false;
 }
 
 std::optional<Crossing> World::first_hit_brute_force(const Ray& ray, double tmin, double tmax,

@@ -46,9 +46,16 @@ class World {
   // The union of the finite objects' bounds (empty if there are none).
   Box3 bounds() const;
 
+  // Which objects a search asks: shadow rays settle the objects that block light outright
+  // (Shape::blocks_light) with blocked() and follow the others crossing by crossing.
+  enum class Objects { all, letting_light_through };
+
   // The nearest crossing of any object in (tmin, tmax).
-  std::optional<Crossing> first_hit(const Ray& ray, double tmin, double tmax,
-                                    TraceStats& stats) const;
+  std::optional<Crossing> first_hit(const Ray& ray, double tmin, double tmax, TraceStats& stats,
+                                    Objects objects = Objects::all) const;
+  // Whether an object that blocks light outright crosses the ray in (tmin, tmax): an any-hit
+  // query, no root refined.
+  bool blocked(const Ray& ray, double tmin, double tmax, TraceStats& stats) const;
   // Every crossing in (tmin, tmax) of the objects that cast shadows, ascending: a shadow ray
   // is dimmed by each transparent surface it passes and stopped by the first opaque one.
   void shadow_crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
@@ -60,6 +67,7 @@ class World {
   // hierarchy (tests compare them).
   std::optional<Crossing> first_hit_brute_force(const Ray& ray, double tmin, double tmax,
                                                 TraceStats& stats) const;
+  bool blocked_brute_force(const Ray& ray, double tmin, double tmax, TraceStats& stats) const;
   void shadow_crossings_brute_force(const Ray& ray, double tmin, double tmax,
                                     std::vector<Crossing>& out, TraceStats& stats) const;
   // The shapes built: one per object, a split union's members counted one by one.
@@ -71,6 +79,7 @@ class World {
   struct Index;  // a BVH over the bounded objects' boxes, and the list of unbounded ones
 
   std::vector<ShapePtr> shapes_;
+  std::vector<uint8_t> blocks_light_;  // shapes_[i]->blocks_light(), asked once
   std::vector<Box3> bounds_;
   std::unique_ptr<const Index> index_;
 };

@@ -41,10 +41,14 @@ Vec3 surface_transmittance(const geometry::SurfaceInfo& surface, const Vec3& poi
 Vec3 shadow_transmittance(const geometry::World& world, const Ray& ray, double tmin,
                           double tmax, double step, RenderStats& stats) {
   ++stats.shadow_rays;
+  // Any crossing of an object that blocks light outright (opaque everywhere) ends the ray
+  // dark, wherever it lies: one any-hit query settles all of them, with no root refined.
+  // Only the objects that may let light through are then followed crossing by crossing.
+  if (world.blocked(ray, tmin, tmax, stats.trace)) return Vec3(0.0);
   Vec3 passed(1.0);
   for (int layer = 0; layer < kMaxShadowLayers && tmin < tmax; ++layer) {
-    const std::optional<geometry::Crossing> crossing =
-        world.first_hit(ray, tmin, tmax, stats.trace);
+    const std::optional<geometry::Crossing> crossing = world.first_hit(
+        ray, tmin, tmax, stats.trace, geometry::World::Objects::letting_light_through);
     if (!crossing) return passed;
     tmin = crossing->t + step;
     const geometry::SurfaceInfo* surface = crossing->surface;

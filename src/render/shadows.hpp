@@ -13,9 +13,10 @@
 namespace convray::render {
 
 // The transmittance along `ray` over (tmin, tmax): 0 where an opaque surface blocks it.
-// Asks the world for one crossing at a time, so that a shadow ray stops at the first opaque
-// surface without finding the ones behind it; `step` (> 0) is how far past a transparent
-// crossing the search resumes.
+// Objects that block light outright (geometry::Shape::blocks_light: opaque everywhere) are
+// settled first by one any-hit query; the others are asked one crossing at a time, so that a
+// shadow ray stops at the first opaque surface without finding the ones behind it; `step`
+// (> 0) is how far past a transparent crossing the search resumes.
 Vec3 shadow_transmittance(const geometry::World& world, const Ray& ray, double tmin,
                           double tmax, double step, RenderStats& stats);
 
