@@ -77,6 +77,7 @@ LineCurvature::LineCurvature(const ConvolutionSurface::Impl& s, uint32_t id, con
   radius_ = radius;
   r2_ = radius * radius;
   flipped_ = strength < 0.0;
+  down_anywhere_ = weight_ * 4.0 * measure_ / r2_;  // what bend_down gives for any window
 }
 
 LineCurvature::LineCurvature(const field::Triangle& tri, double strength, double radius,
@@ -98,6 +99,8 @@ LineCurvature::LineCurvature(const field::Triangle& tri, double strength, double
   hi_ = extent.hi;
   mean_ = extent.mean;
   var_ = extent.var;
+  // bend_down with the whole area within reach and s >= 0: its largest value.
+  down_anywhere_ = weight_ * std::min(4.0 * measure_ / r2_, limit_);
 }
 
 void LineCurvature::prepare_triangle() const {

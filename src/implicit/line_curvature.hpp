@@ -59,6 +59,9 @@ class LineCurvature {
   double up(double a, double b) const { return flipped_ ? bend_down(a, b) : bend_up(a, b); }
   double down(double a, double b) const { return flipped_ ? bend_up(a, b) : bend_down(a, b); }
   CurvatureBounds over(double a, double b) const { return {up(a, b), down(a, b)}; }
+  // How far it may bend down anywhere on the line (a triangle's whole area counted, at most
+  // 2 pi; up: no cheap bound, infinity): a constant for a first test before down().
+  double down_anywhere() const { return flipped_ ? kInfinity : down_anywhere_; }
 
  private:
   // The same for the skeleton's integral of K with a positive strength.
@@ -81,6 +84,7 @@ class LineCurvature {
   bool has_moments_ = false;       // mean_, var_ give the integral of (u.x)^2 (not for blob
                                    // cylinders, whose kernel is not an integral)
   double limit_ = kInfinity;       // 2 pi for a triangle, on each side
+  double down_anywhere_ = kInfinity;  // bend_down's bound over any window
   bool flipped_ = false;           // a negative strength swaps the two sides
   // Triangles: the distance to the plane and the outward distances past each edge of the
   // foot of p(t), each linear in t: value at t = 0 and slope.

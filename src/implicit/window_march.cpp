@@ -17,21 +17,18 @@ using Impl = ConvolutionSurface::Impl;
 
 // Windows are not halved below this fraction of the smallest radius (the field only touches T).
 constexpr double kResolution = 1e-3;
-// The march steps at least this fraction of the smallest radius; such a step is not certified
-// by the one-sided envelope and gets the two-sided test.
+// Windows are at least this fraction of the smallest radius (halved when their chord bound
+// cannot exclude T) ...
 constexpr double kMinStep = 1.0 / 8.0;
-// ... and at most this many smallest radii, the window over which the curvature is summed.
+// ... and at most this many smallest radii.
 constexpr double kMaxStep = 2.0;
+// Each next window is the longest whose chord bound would exclude T if F ended it where it
+// started (D h^2 / 8 below the gap to T). Asking for a margin (half the gap, a quarter) gave
+// more, shorter windows: render instructions (callgrind) 1.05-1.18 times as many.
 
-// F / T - 1 and its slope at t: in units of T, so that strengths from 1e-250 to 1e250 (and T
-// with them) give the same steps and the envelopes' products neither overflow nor underflow.
-struct Sample {
-  double t, g, d;
-};
-
-// What an evaluation of the cluster's field returns: the value, its slope along the ray, and
-// (only when asked) the full gradient.
-enum class Want { value, slope, gradient };
+// What an evaluation of the cluster's field returns: the value, or also the gradient (the
+// first hit's normal).
+enum class Want { value, gradient };
 
 // The cluster's primitives made ready to be summed at any t: the triangles of each mesh in
 // one SIMD batch, evaluated for the lanes whose support holds the point; the rest one by one.
@@ -44,12 +41,12 @@ class ClusterField {
   ClusterField(const Impl& s, const Ray& ray, std::span<const accel::SupportInterval> cluster,
                double origin_t, TraceStats& stats);
 
-  Sample sample(double t);  // value and slope, in units of T
   double value_minus_threshold(double t);  // F / T - 1
   Vec3 gradient(double t);
   // The sum of how far the primitives whose support meets [a, b] may bend up there (or down:
-  // `upward` false), in units of T.
-  double curvature(double a, double b, bool upward) const;
+  // `upward` false), in units of T. `anywhere`: each primitive's bound over its whole line
+  // where it has a cheap one (LineCurvature::down_anywhere), larger but quick to sum.
+  double curvature(double a, double b, bool upward, bool anywhere = false) const;
   double reach() const { return reach_; }
 
  private:
@@ -71,7 +68,7 @@ class ClusterField {
     std::vector<uint32_t> lanes;
   };
   template <Want kWant>
-  field::FieldSample evaluate(double t, double* slope);
+  field::FieldSample evaluate(double t);
   Batch& batch_for(const Impl::Group& group);
   void add_triangle(Batch& b, const field::Triangle& triangle, double enter, double exit);
 
@@ -163,10 +160,9 @@ void ClusterField::add_triangle(Batch& b, const field::Triangle& triangle, doubl
 }
 
 template <Want kWant>
-field::FieldSample ClusterField::evaluate(double t, double* slope) {
+field::FieldSample ClusterField::evaluate(double t) {
   const Vec3 p = ray_.at(t);
   field::FieldSample sum;
-  double along = 0.0;  // slope of the quartic parts
   const double s = t - origin_t_;
   for (size_t k = 0; k < batches_used_; ++k) {
     Batch& b = batches_[k];
@@ -182,7 +178,6 @@ field::FieldSample ClusterField::evaluate(double t, double* slope) {
     }
     const double radius = b.group->radius, strength = b.group->strength;
     sum.value += strength * inside.value(s);
-    if (kWant == Want::slope) along += strength * inside.slope(s);
     if (b.lanes.empty()) continue;
     stats_.field_evaluations += b.lanes.size();
     if constexpr (kWant == Want::value) {
@@ -200,80 +195,77 @@ field::FieldSample ClusterField::evaluate(double t, double* slope) {
       sum += s_.sample(m.id, p);
     }
   }
-  if (slope) *slope = along + glm::dot(sum.gradient, ray_.direction);
   return sum;
 }
 
-Sample ClusterField::sample(double t) {
-  double slope = 0.0;
-  const field::FieldSample f = evaluate<Want::slope>(t, &slope);
-  return {t, f.value / s_.threshold - 1.0, slope / s_.threshold};
-}
-
 double ClusterField::value_minus_threshold(double t) {
-  return evaluate<Want::value>(t, nullptr).value / s_.threshold - 1.0;
+  return evaluate<Want::value>(t).value / s_.threshold - 1.0;
 }
 
-Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t, nullptr).gradient; }
+Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t).gradient; }
 
-double ClusterField::curvature(double a, double b, bool upward) const {
+double ClusterField::curvature(double a, double b, bool upward, bool anywhere) const {
   double sum = 0.0;
   for (const Bending& m : members_) {
     if (m.enter > b) break;  // the cluster is sorted by entry
     if (m.exit < a) continue;
-    sum += upward ? m.curvature.up(a, b) : m.curvature.down(a, b);
+    if (anywhere && !upward) {
+      sum += m.curvature.down_anywhere();
+    } else {
+      sum += upward ? m.curvature.up(a, b) : m.curvature.down(a, b);
+    }
   }
   return sum / s_.threshold;
 }
 
-// How far from `a` the one-sided envelope keeps F on its side of T (infinite when nothing
-// curves and the slope leads away from T).
-double certified_step(const Sample& a, double curvature) {
-  const double gap = std::abs(a.g);
-  const double towards = a.g < 0.0 ? a.d : -a.d;  // slope towards T
-  const double denominator = towards + std::sqrt(towards * towards + 2.0 * curvature * gap);
-  return denominator > 0.0 ? 2.0 * gap / denominator : kInfinity;
-}
-
-// The root in (a.t, b.t) of the cubic Hermite interpolant of two samples on either side of T
-// (their values and slopes), within O(h^4) of the field's root, and the interpolant's slope
-// there: the refiner's first guess and first Newton step.
+// The refiner's first guess for a root and the slope of the curve that gave it.
 struct Guess {
   double t, slope;
 };
-Guess hermite_root(const Sample& a, const Sample& b) {
+
+// F / T - 1 at t: in units of T, so that strengths from 1e-250 to 1e250 (and T with them)
+// give the same windows and the bounds' products neither overflow nor underflow. No slope:
+// a value costs about half a sample with the gradient (field_bench).
+struct Value {
+  double t, g;
+};
+
+// The largest amount by which F may rise above the chord between a and b (below T), or sink
+// below it (above T), given a bound M on how far it bends the other way: F'' >= -M gives
+// F <= chord + M s (h - s) / 2 on the window, a concave quadratic whose peak is found exactly.
+// Whether that bound keeps F off T on [a.t, b.t] (a and b on the same side of T).
+bool chord_excluded(const Value& a, const Value& b, double bend) {
   const double h = b.t - a.t;
-  const auto p = [&](double u) {
-    const double u2 = u * u, u3 = u2 * u;
-    return (2 * u3 - 3 * u2 + 1) * a.g + (u3 - 2 * u2 + u) * h * a.d + (3 * u2 - 2 * u3) * b.g +
-           (u3 - u2) * h * b.d;
-  };
-  double lo = 0.0, hi = 1.0;
-  const bool lo_negative = a.g < 0.0;
-  for (int i = 0; i < 30; ++i) {  // bisection of the cubic to 1e-9 of the window: no field work
-    const double mid = 0.5 * (lo + hi);
-    ((p(mid) < 0.0) == lo_negative ? lo : hi) = mid;
-  }
-  const double u = 0.5 * (lo + hi);
-  const double dp = (6 * u * u - 6 * u) * (a.g - b.g) + (3 * u * u - 4 * u + 1) * h * a.d +
-                    (3 * u * u - 2 * u) * h * b.d;  // dp/du
-  return {a.t + u * h, dp / h};
+  const double sign = a.g < 0.0 ? 1.0 : -1.0;  // below T: how far F rises; above: sinks
+  const double ga = sign * a.g, gb = sign * b.g;  // both negative
+  if (!(bend > 0.0)) return true;  // F is linear: the chord itself
+  const double s = std::clamp(0.5 * h + (gb - ga) / (bend * h), 0.0, h);
+  return ga + (gb - ga) * s / h + 0.5 * bend * s * (h - s) < 0.0;
 }
 
-// Whether the Taylor envelopes of a and b (same side of T) keep F off T on [a.t, b.t].
-bool window_excluded(const Sample& a, const Sample& b, double curvature) {
-  const double h = b.t - a.t;
-  // Below T the upper envelopes count (+M), above it the lower ones (-M); in both cases the
-  // difference of the two envelopes is linear in s, so they meet at one point at most, and
-  // the envelope nearest to T is largest there or at an end (where it is F itself).
-  const double m = a.g < 0.0 ? curvature : -curvature;
-  const double constant = a.g - b.g + b.d * h - 0.5 * m * h * h;
-  const double slope = a.d - b.d + m * h;
-  if (slope == 0.0) return true;
-  const double s = -constant / slope;
-  if (!(s > 0.0 && s < h)) return true;
-  const double envelope = a.g + a.d * s + 0.5 * m * s * s;
-  return a.g < 0.0 ? envelope < 0.0 : envelope > 0.0;
+// The root in (a.t, b.t) of the parabola through three values (a and b on either side of
+// T, c a third point near them) and its slope there: the refiner's first guess and Newton
+// step, within O(h^3) of the field's root. NaN where the parabola has no root in between.
+Guess quadratic_root(const Value& a, const Value& b, const Value& c) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // Newton's form: g(t) = a.g + d1 (t - a.t) + d2 (t - a.t)(t - b.t).
+  const double d1 = (b.g - a.g) / (b.t - a.t);
+  const double d2 = ((c.g - b.g) / (c.t - b.t) - d1) / (c.t - a.t);
+  if (!std::isfinite(d2)) return {nan, nan};
+  // In s = t - a.t, h = b.t - a.t: d2 s^2 + (d1 - d2 h) s + a.g = 0.
+  const double h = b.t - a.t, p = d1 - d2 * h;
+  double s;
+  if (std::abs(d2) * h < 1e-12 * std::abs(p)) {
+    s = -a.g / p;
+  } else {
+    const double disc = p * p - 4.0 * d2 * a.g;
+    if (!(disc >= 0.0)) return {nan, nan};
+    const double q = -0.5 * (p + std::copysign(std::sqrt(disc), p));
+    const double s1 = q / d2, s2 = a.g / q;
+    s = (s1 > 0.0 && s1 < h) ? s1 : s2;
+  }
+  if (!(s > 0.0 && s < h)) return {nan, nan};
+  return {a.t + s, p + 2.0 * d2 * s};
 }
 
 class Marcher {
@@ -288,9 +280,15 @@ class Marcher {
   double last_root() const { return last_root_; }
 
  private:
-  bool bracket(const Sample& a, const Sample& b);
-  bool search_window(const Sample& a, const Sample& b);
-  double certified_reach(const Sample& a, double to, double min_step, double max_step) const;
+  Value value(double t) { return {t, field_.value_minus_threshold(t)}; }
+  bool bracket(const Value& a, const Value& b, const Value* third = nullptr);
+  bool search_window(const Value& a, const Value& b);
+  // How far F may bend away from its chord towards T over [a, b] (a on the side of `g`);
+  // `quick`: a larger bound that costs less (ClusterField::curvature's `anywhere`).
+  double bend_towards_threshold(double a, double b, double g, bool quick = false) const {
+    return field_.curvature(a, b, !(g < 0.0), quick);
+  }
+  double step_from(const Value& a, double to, double min_step, double max_step) const;
 
   const Impl& s_;
   ClusterField& field_;
@@ -302,71 +300,75 @@ class Marcher {
 
 // A sign change between a and b: its root, refined on the exact field (for RootMode::any a
 // point of the bracket is enough).
-bool Marcher::bracket(const Sample& a, const Sample& b) {
+bool Marcher::bracket(const Value& a, const Value& b, const Value* third) {
   double t = b.t;
   if (mode_ != RootMode::any) {
     ++stats_.roots;
-    const Guess guess = hermite_root(a, b);
+    Guess guess{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    if (third) guess = quadratic_root(a, b, *third);
     t = refine_bracket(a.t, b.t, a.g, b.g,
-                             [&](double x) { return field_.value_minus_threshold(x); },
-                             guess.t, guess.slope);
+                       [&](double x) { return field_.value_minus_threshold(x); }, guess.t,
+                       guess.slope);
   }
   if (out_.empty() || t > out_.back() + 1e-9 * s_.min_radius) out_.push_back(t);
   last_root_ = t;
   return mode_ != RootMode::all;
 }
 
-// a and b on the same side of T: halve until the envelopes exclude a crossing pair, or the
-// window is narrower than the resolution.
-bool Marcher::search_window(const Sample& a, const Sample& b) {
-  // Below T only how far F may bend up towards it counts; above it, how far down.
-  if (window_excluded(a, b, field_.curvature(a.t, b.t, a.g < 0.0))) return false;
+// a and b on the same side of T: halve until the chord bound excludes a crossing pair, or
+// the window is narrower than the resolution.
+bool Marcher::search_window(const Value& a, const Value& b) {
+  if (chord_excluded(a, b, bend_towards_threshold(a.t, b.t, a.g, true)) ||
+      chord_excluded(a, b, bend_towards_threshold(a.t, b.t, a.g))) {
+    return false;
+  }
   if (b.t - a.t < kResolution * s_.min_radius) return false;
   ++stats_.subdivisions;
-  const Sample mid = field_.sample(0.5 * (a.t + b.t));
+  const Value mid = value(0.5 * (a.t + b.t));
   if ((mid.g < 0.0) != (a.g < 0.0)) {
-    if (bracket(a, mid)) return true;
-    return bracket(mid, b);
+    if (bracket(a, mid, &b)) return true;
+    return bracket(mid, b, &a);
   }
   if (search_window(a, mid)) return true;
   return search_window(mid, b);
 }
 
-// How far from a the one-sided envelope certifies that F stays on a's side of T, up to
-// max_step. The curvature bound sums the primitives whose support meets the window, so a
-// short window has a smaller bound than a long one: windows double from min_step while the
-// whole window is certified, and the step is the last certified length (a bound over a
-// window holds over any part of it).
-double Marcher::certified_reach(const Sample& a, double to, double min_step,
-                                double max_step) const {
-  double best = 0.0;
+// The next window from a: the longest, doubling from min_step up to max_step, over which
+// the chord bound would exclude T if F came back to a's value at its end (the sum of each
+// primitive's bound over its whole line is tried first: it costs nothing per window).
+double Marcher::step_from(const Value& a, double to, double min_step, double max_step) const {
+  const double gap = std::abs(a.g);
+  double best = min_step;
   for (double window = min_step;; window = std::min(2.0 * window, max_step)) {
     const double end = std::min(to, a.t + window);
-    const double step = certified_step(a, field_.curvature(a.t, end, a.g < 0.0));
-    if (step < window) return std::max(best, step);
+    const auto fits = [&](bool quick) {
+      return bend_towards_threshold(a.t, end, a.g, quick) * window * window < 8.0 * gap;
+    };
+    if (!fits(true) && !fits(false)) return best;
     best = window;
-    if (window >= max_step || a.t + window >= to) return best;
+    if (window >= max_step || end >= to) return best;
   }
 }
 
 bool Marcher::march(double from, double to, bool at_cluster_entry) {
   const double min_step = kMinStep * s_.min_radius, max_step = kMaxStep * s_.min_radius;
-  // Where the ray enters the cluster's first support, every field of the cluster is zero with
-  // a zero slope (each kernel vanishes with zero slope at its support's edge, and no other
-  // support has begun): F = 0 < T, F' = 0, known without an evaluation.
-  Sample a = at_cluster_entry ? Sample{from, -1.0, 0.0} : field_.sample(from);
+  // Where the ray enters the cluster's first support, every field of the cluster is zero
+  // (each kernel vanishes at its support's edge, and no other support has begun): F = 0 < T,
+  // known without an evaluation.
+  Value a = at_cluster_entry ? Value{from, -1.0} : value(from);
   if (a.g == 0.0 && bracket(a, a)) return true;
+  Value before = a;
+  bool have_before = false;
   while (a.t < to) {
     ++stats_.fits;
-    const double certified_length = certified_reach(a, to, min_step, max_step);
-    const bool certified = certified_length >= min_step;
-    const double step = std::clamp(certified_length, min_step, max_step);
-    const Sample b = field_.sample(std::min(to, a.t + step));
+    const Value b = value(std::min(to, a.t + step_from(a, to, min_step, max_step)));
     if ((a.g < 0.0) != (b.g < 0.0)) {
-      if (bracket(a, b)) return true;
-    } else if (!certified && search_window(a, b)) {
+      if (bracket(a, b, have_before ? &before : nullptr)) return true;
+    } else if (search_window(a, b)) {
       return true;
     }
+    before = a;
+    have_before = true;
     a = b;
   }
   return false;

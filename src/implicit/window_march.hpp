@@ -2,18 +2,19 @@
 // Front to back along a cluster of overlapping supports, on the summed exact field: the fast
 // path of ConvolutionSurface for rays (docs/ray-tracing.md, "Window march").
 //
-// The field F of the primitives whose support the ray crosses is sampled with its slope,
-// F(t) and F'(t), every triangle of a mesh through the SIMD batch at once. Between samples
-// certified one-sided bounds on F'' (each primitive's own over the window, summed over those
-// whose support meets it: line_curvature.hpp) say where F cannot reach T. Below T only how
-// far F may bend up counts (U), above T only how far down (D); with M the one that counts:
-//   - from one sample, F stays on its side of T for a step h with
-//     |F(a) - T| > |F'(a)| h + M h^2 / 2 (the step the march takes, where it is not tiny);
-//   - between two samples on the same side of T, the two Taylor envelopes
-//     F(a) + F'(a) s +- M s^2 / 2 and F(b) - F'(b) s' +- M s'^2 / 2 bound F; a window where
-//     neither can reach T holds no pair of crossings, and one where they can is halved.
-// A sign change between samples brackets a root, which is refined on the exact field
-// (core/bracket_refine.hpp).
+// The field F of the primitives whose support the ray crosses is sampled by value only
+// (about half the cost of a sample with its gradient), every triangle of a mesh through the
+// SIMD batch at once. Between two samples on the same side of T, certified one-sided bounds
+// on F'' (each primitive's own over the window, summed over those whose support meets it:
+// line_curvature.hpp) bound how far F can leave its chord: below T, F'' >= -D gives
+// F <= chord + D s (h - s) / 2, a parabola whose peak is found exactly (above T the mirror
+// image with the upward bound U). A window whose parabola stays off T holds no pair of
+// crossings; one whose parabola reaches T is halved. Each next window is the longest over
+// which that bound would still hold if F ended it where it started; the sum of each
+// primitive's bound over its whole line (cheap) is tried before the window's own.
+// A sign change between samples brackets a root, refined on the exact field
+// (core/bracket_refine.hpp) from the root of the parabola through the bracket and the
+// sample before it.
 //
 // Windows narrower than 10^-3 of the smallest radius are not halved further: there the field
 // only touches T, as the fitted path and the reference tracer also accept.
