@@ -3,34 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/bracket_refine.hpp"
+
 namespace convray::geometry {
 namespace {
-
-// The one root of a polynomial monotone on [a, b] whose ends differ in sign: Newton steps
-// from the bracket's better end, falling back to bisection whenever a step leaves the
-// bracket or fails to halve it.
-double monotone_root(std::span<const double> c, std::span<const double> slope, double a, double b,
-                     double fa) {
-  double x = 0.5 * (a + b), width_before = b - a;
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    const double fx = evaluate_polynomial(c, x);
-    if (fx == 0.0) return x;
-    // Keep f(a) of the sign of fa and f(b) of the other.
-    if ((fx < 0.0) == (fa < 0.0)) {
-      a = x;
-    } else {
-      b = x;
-    }
-    const double dx = evaluate_polynomial(slope, x);
-    double next = dx != 0.0 ? x - fx / dx : a;
-    const double width = b - a;
-    if (!(next > a && next < b) || width > 0.5 * width_before) next = a + 0.5 * width;
-    width_before = width;
-    if (!(next > a && next < b)) break;  // the bracket is as small as doubles allow
-    x = next;
-  }
-  return std::abs(evaluate_polynomial(c, a)) < std::abs(evaluate_polynomial(c, b)) ? a : b;
-}
 
 int roots_of_degree(std::span<const double> c, double lo, double hi, double* out) {
   int degree = int(c.size()) - 1;
@@ -68,7 +44,8 @@ int roots_of_degree(std::span<const double> c, double lo, double hi, double* out
     if (f_left == 0.0) {
       add(a);
     } else if (f_right != 0.0 && (f_left < 0.0) != (f_right < 0.0) && b > a) {
-      add(monotone_root(c, derivative, a, b, f_left));
+      add(refine_bracket(a, b, f_left, f_right,
+                         [c](double x) { return evaluate_polynomial(c, x); }));
     }
     f_left = f_right;
   }

@@ -1,9 +1,9 @@
 #pragma once
 // Real roots of small polynomials on an interval, found without closed forms: the roots of
 // the derivative split the interval into pieces where the polynomial is monotone, and each
-// piece whose ends differ in sign holds exactly one root, found by Newton's method kept
-// inside a shrinking bracket. Robust where the quartic formula loses digits (tori seen from
-// afar, nearly double roots).
+// piece whose ends differ in sign holds exactly one root, refined in that bracket by the one
+// bracketed refiner (core/bracket_refine.hpp). Robust where the quartic formula loses digits
+// (tori seen from afar, nearly double roots).
 #include <span>
 
 namespace convray::geometry {

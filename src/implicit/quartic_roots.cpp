@@ -1,7 +1,6 @@
 #include "implicit/quartic_roots.hpp"
 
-#include <cmath>
-
+#include "core/bracket_refine.hpp"
 #include "implicit/de_casteljau.hpp"
 
 namespace convray::implicit {
@@ -80,37 +79,9 @@ class Isolator {
     push(polish(mid, hi, at_mid, b[4]));
   }
 
-  // Newton's method from the regula falsi guess, every step kept inside the bracket [a, b]
-  // over which q changes sign (bisection when Newton leaves it or stalls).
+  // The one root in [a, b], over which q changes sign.
   double polish(double a, double b, double fa, double fb) const {
-    double v = a - fa * (b - a) / (fb - fa);
-    if (!(v > a && v < b)) v = 0.5 * (a + b);
-    double width = b - a;
-    for (int iteration = 0; iteration < 100 && b - a > options_.tolerance; ++iteration) {
-      const double fv = q_(v);
-      if (fv == 0.0) return v;
-      if (differ(fv, fa)) {
-        b = v;
-      } else {
-        a = v;
-        fa = fv;
-      }
-      const double slope = q_.slope(v);
-      double next = slope != 0.0 ? v - fv / slope : a;
-      // Outside the bracket, or a bracket that failed to halve in four steps: bisect.
-      bool bisect = !(next > a && next < b);
-      if (iteration % 4 == 3) {
-        bisect = bisect || b - a > 0.5 * width;
-        width = b - a;
-      }
-      if (bisect) {
-        next = 0.5 * (a + b);
-      } else if (std::abs(next - v) <= options_.tolerance) {
-        return next;
-      }
-      v = next;
-    }
-    return v;
+    return refine_bracket(a, b, fa, fb, q_);
   }
 
   const Quartic& q_;

@@ -3,8 +3,8 @@
 // cancellations lose digits near double roots): the Bernstein control points over a
 // sub-interval change sign V times; there are at most V roots there, and exactly one when
 // V = 1 (Descartes' rule of signs in Bernstein form). Intervals with V >= 2 are halved
-// (de Casteljau) until every root is alone, and each is then polished by Newton's method kept
-// inside its sign-changing bracket, down to `tolerance` (about an ulp of the caller's t).
+// (de Casteljau) until every root is alone, and each is then refined in its sign-changing
+// bracket by the one bracketed refiner (core/bracket_refine.hpp), to a few ulps of the root.
 #include <vector>
 
 #include "implicit/quartic.hpp"
@@ -15,8 +15,6 @@ struct QuarticRootOptions {
   // Below this width (in v) an interval is not halved any more: a pair of roots closer than
   // this (the quartic barely touching zero) is told from a miss by the sign at its middle.
   double resolution = 0.0;
-  // A root is polished until its bracket, or Newton's last step, is this narrow (in v).
-  double tolerance = 0.0;
   bool first_only = false;  // stop after the smallest root
 };
 

@@ -146,9 +146,9 @@ bool SphereSweep::solve(double lo, double hi) {
   QuarticRootOptions options;
   const bool first_only = request_.mode != RootMode::all;
   options.first_only = first_only;
-  options.tolerance = 4.0 * std::numeric_limits<double>::epsilon() *
-                      std::max(std::abs(lo), std::abs(hi));
-  options.resolution = std::max(options.tolerance, 1e-9 * s_.min_radius);
+  const double ulps_of_t = 4.0 * std::numeric_limits<double>::epsilon() *
+                          std::max(std::abs(lo), std::abs(hi));
+  options.resolution = std::max(ulps_of_t, 1e-9 * s_.min_radius);
   quartic_roots(q, hi - lo, options, roots_);
   bool found = false;
   for (double v : roots_) {

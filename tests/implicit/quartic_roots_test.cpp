@@ -29,7 +29,6 @@ Quartic from_roots(double a, const std::array<double, 4>& r) {
 std::vector<double> roots_of(const Quartic& q, double width, bool first_only = false) {
   QuarticRootOptions options;
   options.resolution = 1e-12;
-  options.tolerance = 1e-15;
   options.first_only = first_only;
   std::vector<double> out;
   quartic_roots(q, width, options, out);
