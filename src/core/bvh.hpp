@@ -1,6 +1,7 @@
 #pragma once
-// A bounding volume hierarchy over boxes (mesh triangles, a world's objects, a CSG's
-// children), built with binned surface-area heuristic splits. Traversal visits the primitives
+// The one bounding volume hierarchy over boxes (mesh triangles, a world's objects, a CSG's
+// children, the Cauchy surface's truncation boxes), built with binned surface-area heuristic
+// splits. Traversal visits the primitives
 // of the leaves whose boxes the ray meets, nearer child first, and lets a closest-hit query
 // narrow the ray as it goes; the point query visits the primitives whose leaves hold a point
 // (CSG's inside tests). The slow exact twin is a loop over every primitive; tests compare.
@@ -13,7 +14,7 @@
 #include "core/box.hpp"
 #include "core/ray.hpp"
 
-namespace convray::geometry {
+namespace convray {
 
 class Bvh {
  public:
@@ -125,4 +126,4 @@ bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
   return false;
 }
 
-}  // namespace convray::geometry
+}  // namespace convray
