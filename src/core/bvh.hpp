@@ -39,6 +39,12 @@ class Bvh {
   template <class Visit>
   bool any_at(const Vec3& p, Visit&& visit) const;
 
+  // Calls visit(primitive, best) for every primitive of every leaf whose box is nearer to p
+  // than `best` (a distance), nearer child first; visit may lower best (double&) to prune what
+  // follows. A nearest-point query: boxes must hold their primitives, padded for rounding.
+  template <class Visit>
+  void nearer_than(const Vec3& p, double& best, Visit&& visit) const;
+
  private:
   struct Node {
     Box3 box;
@@ -124,6 +130,36 @@ bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
     stack[top++] = index + 1;
   }
   return false;
+}
+
+// Squared distance from p to `box`; 0 inside.
+inline double box_distance2(const Vec3& p, const Box3& box) {
+  const Vec3 outside = glm::max(glm::max(box.lo - p, p - box.hi), Vec3(0.0));
+  return glm::dot(outside, outside);
+}
+
+template <class Visit>
+void Bvh::nearer_than(const Vec3& p, double& best, Visit&& visit) const {
+  if (nodes_.empty()) return;
+  uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const uint32_t index = stack[--top];
+    const Node& node = nodes_[index];
+    if (box_distance2(p, node.box) >= best * best) continue;
+    if (node.count > 0) {
+      for (uint32_t i = node.offset; i < node.offset + node.count; ++i) visit(order_[i], best);
+      continue;
+    }
+    // Push the farther child first so that the nearer one is visited first.
+    uint32_t near = index + 1, far = node.offset;
+    if (box_distance2(p, nodes_[far].box) < box_distance2(p, nodes_[near].box)) {
+      std::swap(near, far);
+    }
+    stack[top++] = far;
+    stack[top++] = near;
+  }
 }
 
 }  // namespace convray
