@@ -54,6 +54,12 @@ class Bvh {
   };
   struct Slabs;  // the ray's per-axis reciprocal directions
 
+  // The depth-first walk of the queries: a node is entered where enter(node) holds; a leaf's
+  // primitives go to visit(primitive), which ends the walk by returning true (and walk returns
+  // true); first_child_first(index, node) orders an interior node's children.
+  template <class Enter, class VisitLeaf, class FirstChildFirst>
+  bool walk(Enter&& enter, VisitLeaf&& visit, FirstChildFirst&& first_child_first) const;
+
   void build(std::span<const Box3> boxes, std::vector<Vec3>& centroids, uint32_t node,
              uint32_t begin, uint32_t end, int max_leaf_size, int depth);
   uint32_t split(std::span<const Box3> boxes, const std::vector<Vec3>& centroids,
@@ -83,35 +89,8 @@ inline bool ray_meets_box(const Vec3& origin, const Vec3& inverse_direction, con
   return true;
 }
 
-template <class Visit>
-void Bvh::traverse(const Ray& ray, double tmin, double& tmax, Visit&& visit) const {
-  if (nodes_.empty()) return;
-  const Vec3 inverse = 1.0 / ray.direction;
-  uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (!ray_meets_box(ray.origin, inverse, node.box, tmin, tmax)) continue;
-    if (node.count > 0) {
-      for (uint32_t i = node.offset; i < node.offset + node.count; ++i) visit(order_[i], tmax);
-      continue;
-    }
-    // Push the far child first so that the near one is visited first.
-    const auto index = uint32_t(&node - nodes_.data());
-    const uint32_t first = index + 1, second = node.offset;
-    if (ray.direction[node.axis] < 0.0) {
-      stack[top++] = first;
-      stack[top++] = second;
-    } else {
-      stack[top++] = second;
-      stack[top++] = first;
-    }
-  }
-}
-
-template <class Visit>
-bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
+template <class Enter, class VisitLeaf, class FirstChildFirst>
+bool Bvh::walk(Enter&& enter, VisitLeaf&& visit, FirstChildFirst&& first_child_first) const {
   if (nodes_.empty()) return false;
   uint32_t stack[128];
   int top = 0;
@@ -119,17 +98,35 @@ bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
   while (top > 0) {
     const uint32_t index = stack[--top];
     const Node& node = nodes_[index];
-    if (!contains(node.box, p)) continue;
+    if (!enter(node)) continue;
     if (node.count > 0) {
       for (uint32_t i = node.offset; i < node.offset + node.count; ++i) {
         if (visit(order_[i])) return true;
       }
       continue;
     }
-    stack[top++] = node.offset;
-    stack[top++] = index + 1;
+    // The child to visit first goes on the stack last. The first child follows its parent.
+    const bool first_first = first_child_first(index, node);
+    stack[top++] = first_first ? node.offset : index + 1;
+    stack[top++] = first_first ? index + 1 : node.offset;
   }
   return false;
+}
+
+template <class Visit>
+void Bvh::traverse(const Ray& ray, double tmin, double& tmax, Visit&& visit) const {
+  const Vec3 inverse = 1.0 / ray.direction;
+  walk([&](const Node& node) { return ray_meets_box(ray.origin, inverse, node.box, tmin, tmax); },
+       [&](uint32_t primitive) { return visit(primitive, tmax), false; },
+       // Nearer child first: the first child holds the lower side of the split axis.
+       [&](uint32_t, const Node& node) { return !(ray.direction[node.axis] < 0.0); });
+}
+
+template <class Visit>
+bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
+  return walk([&](const Node& node) { return contains(node.box, p); },
+              [&](uint32_t primitive) { return bool(visit(primitive)); },
+              [](uint32_t, const Node&) { return true; });
 }
 
 // Squared distance from p to `box`; 0 inside.
@@ -140,26 +137,13 @@ inline double box_distance2(const Vec3& p, const Box3& box) {
 
 template <class Visit>
 void Bvh::nearer_than(const Vec3& p, double& best, Visit&& visit) const {
-  if (nodes_.empty()) return;
-  uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const uint32_t index = stack[--top];
-    const Node& node = nodes_[index];
-    if (box_distance2(p, node.box) >= best * best) continue;
-    if (node.count > 0) {
-      for (uint32_t i = node.offset; i < node.offset + node.count; ++i) visit(order_[i], best);
-      continue;
-    }
-    // Push the farther child first so that the nearer one is visited first.
-    uint32_t near = index + 1, far = node.offset;
-    if (box_distance2(p, nodes_[far].box) < box_distance2(p, nodes_[near].box)) {
-      std::swap(near, far);
-    }
-    stack[top++] = far;
-    stack[top++] = near;
-  }
+  walk([&](const Node& node) { return box_distance2(p, node.box) < best * best; },
+       [&](uint32_t primitive) { return visit(primitive, best), false; },
+       // Nearer child first.
+       [&](uint32_t index, const Node& node) {
+         return !(box_distance2(p, nodes_[node.offset].box) <
+                  box_distance2(p, nodes_[index + 1].box));
+       });
 }
 
 }  // namespace convray
