@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "core/box.hpp"
+#include "core/polynomial_roots.hpp"
 #include "geometry/disc.hpp"
-#include "geometry/polynomial.hpp"
 
 namespace convray::geometry {
 

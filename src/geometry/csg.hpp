@@ -7,12 +7,12 @@
 //    inside the first and outside the rest, their normals flipped; inside the first and
 //    none of the rest.
 // Each kept crossing keeps its child's surface description (texture, interior).
-// The children sit in two hierarchies (bvh.hpp): one over their surfaces' boxes, which rays
+// The children sit in two hierarchies (core/bvh.hpp): one over their surfaces' boxes, which rays
 // traverse, and one over their insides' boxes, which inside tests query; so a ray or a point
 // costs about log n plus the children it really meets, not n.
 #include <vector>
 
-#include "geometry/bvh.hpp"
+#include "core/bvh.hpp"
 #include "geometry/primitive.hpp"
 #include "scene/object.hpp"
 

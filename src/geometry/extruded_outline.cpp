@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "core/box.hpp"
-#include "geometry/polynomial.hpp"
 
 namespace convray::geometry {
 

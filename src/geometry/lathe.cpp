@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/box.hpp"
-#include "geometry/polynomial.hpp"
+#include "core/polynomial_roots.hpp"
 
 namespace convray::geometry {
 

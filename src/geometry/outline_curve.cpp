@@ -1,6 +1,6 @@
 #include "geometry/outline_curve.hpp"
 
-#include "geometry/polynomial.hpp"
+#include "core/polynomial_roots.hpp"
 
 namespace convray::geometry {
 

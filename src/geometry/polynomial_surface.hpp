@@ -8,7 +8,7 @@
 // gradient.
 #include <vector>
 
-#include "geometry/polynomial.hpp"
+#include "core/polynomial_roots.hpp"
 #include "geometry/primitive.hpp"
 
 namespace convray::geometry {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/polynomial.hpp"
+#include "core/polynomial_roots.hpp"
 
 namespace convray::geometry {
 

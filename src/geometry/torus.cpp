@@ -1,10 +1,10 @@
 #include "geometry/torus.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include "core/box.hpp"
-#include "geometry/polynomial.hpp"
+#include "core/bracket_refine.hpp"
+#include "core/polynomial_roots.hpp"
 
 namespace convray::geometry {
 
@@ -30,23 +30,23 @@ Vec3 TorusShape::outward_normal(const Vec3& p) const {
   return length > 0.0 ? away / length : Vec3(0.0, 1.0, 0.0);
 }
 
-double TorusShape::polish(const Ray& ray, double t) const {
-  // Newton on the distance-like function, kept only while it improves the residual.
-  double best = t, best_residual = std::abs(implicit_value(ray.at(t)));
-  for (int step = 0; step < 3 && best_residual > 0.0; ++step) {
-    const Vec3 p = ray.at(best);
-    const double rho = std::sqrt(p.x * p.x + p.z * p.z);
-    if (rho == 0.0) break;
-    const double rho_slope = (p.x * ray.direction.x + p.z * ray.direction.z) / rho;
-    const double slope = 2.0 * (rho - major_) * rho_slope + 2.0 * p.y * ray.direction.y;
-    if (slope == 0.0) break;
-    const double next = best - implicit_value(p) / slope;
-    const double residual = std::abs(implicit_value(ray.at(next)));
-    if (!(residual < best_residual)) break;
-    best = next;
-    best_residual = residual;
+// The quartic's coefficients lose digits (a torus seen from afar); the distance-like function
+// does not. The quartic is that function times (sqrt(x^2 + z^2) + major)^2 + y^2 - minor^2,
+// positive where major > minor, so the two change sign together and each bracket of the
+// quartic's roots is refined on the distance-like function itself; where their signs at the
+// bracket's ends disagree (a spindle torus, or ends that rounding sets apart), on the quartic.
+double TorusShape::root_in(const Ray& ray, double enter, std::span<const double> quartic,
+                           const RootBracket& bracket) const {
+  if (!bracket.exact()) {
+    const auto along = [&](double t) { return implicit_value(ray.at(t)); };
+    const double lo = enter + bracket.lo, hi = enter + bracket.hi;
+    const double f_lo = along(lo), f_hi = along(hi);
+    if (f_lo != 0.0 && f_hi != 0.0 && (f_lo < 0.0) != (f_hi < 0.0) &&
+        (f_lo < 0.0) == (bracket.f_lo < 0.0)) {
+      return refine_bracket(lo, hi, f_lo, f_hi, along);
+    }
   }
-  return best;
+  return enter + refine_polynomial_root(quartic, bracket);
 }
 
 void TorusShape::crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
@@ -71,15 +71,11 @@ void TorusShape::crossings(const Ray& ray, double tmin, double tmax, std::vector
       4.0 * b,
       1.0,
   };
-  double roots[4];
-  const int count = polynomial_roots(c, 0.0, leave - enter, roots);
-  for (int i = 0; i < count; ++i) roots[i] = polish(ray, enter + roots[i]);
-  // Polishing may swap two nearly equal roots: restore the order (insertion sort).
-  for (int i = 1; i < count; ++i) {
-    for (int j = i; j > 0 && roots[j] < roots[j - 1]; --j) std::swap(roots[j], roots[j - 1]);
-  }
-  for (int i = 0; i < count; ++i) {
-    add_crossing(roots[i], outward_normal(ray.at(roots[i])), surface_.get(), tmin, tmax, out);
+  RootBracket brackets[4];
+  const int count = polynomial_brackets(c, 0.0, leave - enter, brackets);
+  for (int i = 0; i < count; ++i) {  // disjoint brackets, ascending: so are their roots
+    const double t = root_in(ray, enter, c, brackets[i]);
+    add_crossing(t, outward_normal(ray.at(t)), surface_.get(), tmin, tmax, out);
   }
 }
 

@@ -4,9 +4,12 @@
 //
 // Along a ray the surface is a quartic. Its closed-form roots lose digits (seen from afar, or
 // nearly tangent), so the quartic is written about the point where the ray enters the
-// torus' box, its roots are isolated on the ray's span inside the box by the derivatives'
-// roots (polynomial.hpp), and each is polished by Newton's method on the distance-like
+// torus' box, its roots are bracketed on the ray's span inside the box by the one polynomial
+// root finder (core/polynomial_roots.hpp), and each bracket is refined on the distance-like
 // function (sqrt(x^2 + z^2) - major)^2 + y^2 - minor^2.
+#include <span>
+
+#include "core/polynomial_roots.hpp"
 #include "geometry/primitive.hpp"
 
 namespace convray::geometry {
@@ -25,7 +28,9 @@ class TorusShape final : public Shape {
   Vec3 outward_normal(const Vec3& p) const;
 
  private:
-  double polish(const Ray& ray, double t) const;
+  // The root in one bracket of the quartic (in t - enter) along the ray.
+  double root_in(const Ray& ray, double enter, std::span<const double> quartic,
+                 const RootBracket& bracket) const;
 
   double major_, minor_;
   SurfaceInfoPtr surface_;

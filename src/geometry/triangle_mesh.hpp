@@ -4,13 +4,13 @@
 // A mesh with an `inside_vector` is a solid: a point is inside when a ray from it along that
 // vector crosses the mesh an odd number of times. Without one the mesh has no inside.
 //
-// Rays go through a BVH of the triangles (bvh.hpp); crossings_brute_force() is its slow
+// Rays go through a BVH of the triangles (core/bvh.hpp); crossings_brute_force() is its slow
 // exact twin.
 #include <array>
 #include <optional>
 #include <vector>
 
-#include "geometry/bvh.hpp"
+#include "core/bvh.hpp"
 #include "geometry/primitive.hpp"
 #include "scene/object.hpp"
 

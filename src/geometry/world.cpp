@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "core/box.hpp"
-#include "geometry/bvh.hpp"
+#include "core/bvh.hpp"
 
 namespace convray::geometry {
 namespace {

@@ -1,10 +1,13 @@
 #pragma once
-// A bounding-volume hierarchy over axis-aligned boxes (median split on the widest axis), for
-// the Cauchy surface's truncation boxes: which boxes hold a point, and which boxes a ray
-// crosses and where it enters and leaves each. Boxes are closed: a point on a face is inside.
+// The Cauchy surface's truncation boxes in the one hierarchy over boxes (core/bvh.hpp): which
+// boxes hold a point, and which boxes a ray crosses and where it enters and leaves each. Boxes
+// are closed: a point on a face is inside. The hierarchy is built over the boxes slightly
+// padded (core/box.hpp's padded), so that its slab test, by reciprocals, never culls a box
+// that the exact clip of the answers (clip_to_box) meets.
 #include <cstdint>
 #include <vector>
 
+#include "core/bvh.hpp"
 #include "core/ray.hpp"
 #include "util/math.hpp"
 
@@ -16,7 +19,7 @@ class BoxBvh {
   explicit BoxBvh(std::vector<Box3> boxes);
 
   const std::vector<Box3>& boxes() const { return boxes_; }
-  Box3 bounds() const { return nodes_.empty() ? Box3{} : nodes_[0].box; }
+  Box3 bounds() const { return bounds_; }
   size_t memory_bytes() const;
 
   // Appends the index of every box that holds p.
@@ -31,16 +34,9 @@ class BoxBvh {
   void crossed(const Ray& ray, double tmin, double tmax, std::vector<Span>& out) const;
 
  private:
-  struct Node {
-    Box3 box;
-    uint32_t first = 0;  // leaf: first entry in order_; inner: index of the left child
-    uint32_t count = 0;  // leaf: number of boxes; inner: 0 (the right child is left + 1)
-  };
-  void build(uint32_t node, uint32_t begin, uint32_t end);
-
   std::vector<Box3> boxes_;
-  std::vector<uint32_t> order_;  // box indices, grouped by leaf
-  std::vector<Node> nodes_;
+  Box3 bounds_;
+  Bvh bvh_;  // over the padded boxes
 };
 
 }  // namespace convray::implicit

@@ -1,7 +1,9 @@
 #pragma once
 // A uniform grid over a set of boxes (each primitive's support: its bounding box grown by R),
-// answering "which primitives can be non-zero at point P" with one cell lookup. A stand-in
-// point query until the Embree-based accel/ module exists; the cell lists are conservative.
+// answering "which primitives can be non-zero at point P" with one cell lookup; the cell lists
+// are conservative. MeshField's point query, for the millions of points of `field`, `slice`
+// and `polygonize` on a triangle file: one cell and its compressed row, where a hierarchy
+// (core/bvh.hpp, or Embree in accel/) walks a path of nodes per point.
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
+
+#include "core/box.hpp"
+#include "core/bvh.hpp"
 
 namespace convray::mesh {
 namespace {
@@ -15,91 +17,34 @@ double point_segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
   return glm::distance(p, a + t * ab);
 }
 
-// Squared distance from p to a box; 0 inside.
-double box_distance2(const Vec3& p, const Box3& box) {
-  const Vec3 outside = glm::max(glm::max(box.lo - p, p - box.hi), Vec3(0.0));
-  return glm::dot(outside, outside);
-}
-
-// A bounding-volume hierarchy over a soup's triangles, for nearest-point queries: median
-// splits along the longest axis of the centroids' box, leaves of up to four triangles.
+// The nearest-point query over a soup's triangles, in the one hierarchy (core/bvh.hpp) built
+// over their padded boxes, so that a box is never farther than rounding puts its triangles.
 class TriangleTree {
  public:
-  explicit TriangleTree(const TriangleSoup& soup) : soup_(soup), order_(soup.size()) {
-    std::iota(order_.begin(), order_.end(), size_t{0});
-    nodes_.reserve(2 * soup.size() / kLeafSize + 1);
-    build(0, order_.size());
-  }
+  explicit TriangleTree(const TriangleSoup& soup) : soup_(soup), bvh_(padded_boxes(soup)) {}
 
   // Distance from p to the nearest triangle.
   double nearest(const Vec3& p) const {
     double best = INFINITY;
-    // Depth-first, nearer child first, skipping boxes no nearer than the best so far.
-    size_t stack[128];
-    size_t depth = 0;
-    stack[depth++] = 0;
-    while (depth > 0) {
-      const Node& node = nodes_[stack[--depth]];
-      if (box_distance2(p, node.box) >= best * best) continue;
-      if (node.count > 0) {
-        for (size_t i = node.first; i < node.first + node.count; ++i) {
-          const std::array<Vec3, 3> c = soup_.corners(order_[i]);
-          best = std::min(best, point_triangle_distance(p, c[0], c[1], c[2]));
-        }
-        continue;
-      }
-      size_t near = node.first, far = node.right;
-      if (box_distance2(p, nodes_[far].box) < box_distance2(p, nodes_[near].box))
-        std::swap(near, far);
-      stack[depth++] = far;
-      stack[depth++] = near;
-    }
+    bvh_.nearer_than(p, best, [&](uint32_t t, double& nearest) {
+      const std::array<Vec3, 3> c = soup_.corners(t);
+      nearest = std::min(nearest, point_triangle_distance(p, c[0], c[1], c[2]));
+    });
     return best;
   }
 
  private:
-  static constexpr size_t kLeafSize = 4;
-  struct Node {
-    Box3 box;
-    size_t first = 0;  // leaf: first index into order_; inner node: index of the left child
-    size_t count = 0;  // triangles of a leaf; 0 for an inner node
-    size_t right = 0;  // inner node: index of the right child
-  };
-
-  Vec3 centroid(size_t t) const {
-    const std::array<Vec3, 3> c = soup_.corners(t);
-    return (c[0] + c[1] + c[2]) / 3.0;
-  }
-
-  // Builds the node for order_[begin, end) and returns its index. Median splits keep the depth
-  // at log2(n / 4) + 1, well inside the query's stack.
-  size_t build(size_t begin, size_t end) {
-    const size_t index = nodes_.size();
-    nodes_.push_back({});
-    Box3 box, centres;
-    for (size_t i = begin; i < end; ++i) {
-      for (const Vec3& corner : soup_.corners(order_[i])) box.extend(corner);
-      centres.extend(centroid(order_[i]));
+  static std::vector<Box3> padded_boxes(const TriangleSoup& soup) {
+    std::vector<Box3> boxes(soup.size());
+    for (size_t t = 0; t < soup.size(); ++t) {
+      for (const Vec3& corner : soup.corners(t)) boxes[t].extend(corner);
+      boxes[t] = padded(boxes[t]);
     }
-    if (end - begin <= kLeafSize) {
-      nodes_[index] = {box, begin, end - begin, 0};
-      return index;
-    }
-    const Vec3 extent = centres.extent();
-    const int axis =
-        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-    const size_t middle = begin + (end - begin) / 2;
-    std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
-                     [&](size_t a, size_t b) { return centroid(a)[axis] < centroid(b)[axis]; });
-    build(begin, middle);  // the left child is the next node
-    const size_t right = build(middle, end);
-    nodes_[index] = {box, index + 1, 0, right};
-    return index;
+    return boxes;
   }
 
   const TriangleSoup& soup_;
-  std::vector<size_t> order_;
-  std::vector<Node> nodes_;
+  Bvh bvh_;
 };
 
 double triangle_area(const std::array<Vec3, 3>& c) {

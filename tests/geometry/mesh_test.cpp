@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-#include "geometry/bvh.hpp"
+#include "core/bvh.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "geometry_test_support.hpp"
 

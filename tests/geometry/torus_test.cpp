@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "geometry/polynomial.hpp"
+#include "core/polynomial_roots.hpp"
 #include "geometry_test_support.hpp"
 
 namespace convray::geometry {

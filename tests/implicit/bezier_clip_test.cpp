@@ -7,7 +7,7 @@
 #include <random>
 
 #include "implicit/bezier_clip.hpp"
-#include "polynomial_oracle.hpp"
+#include "reference/polynomial_oracle.hpp"
 
 namespace convray::implicit {
 namespace {

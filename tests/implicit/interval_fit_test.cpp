@@ -7,7 +7,7 @@
 #include <random>
 
 #include "implicit/interval_fit.hpp"
-#include "polynomial_oracle.hpp"
+#include "reference/polynomial_oracle.hpp"
 #include "util/math.hpp"
 
 namespace convray::implicit {

@@ -1,14 +1,14 @@
-// The quartic helpers of the sphere sweep against direct evaluation, and its root finder
-// against quartics built from known roots: distinct, close pairs, double roots, none, and
-// roots exactly on the ends of the interval.
+// The quartic helpers of the sphere sweep against direct evaluation, and the root finder it
+// uses (core/polynomial_roots.hpp) against quartics built from known roots: distinct, close
+// pairs, double roots, none, and roots exactly on the ends of the interval.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 
+#include "core/polynomial_roots.hpp"
 #include "implicit/insertion_sort.hpp"
 #include "implicit/quartic.hpp"
-#include "implicit/quartic_roots.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -27,12 +27,8 @@ Quartic from_roots(double a, const std::array<double, 4>& r) {
 }
 
 std::vector<double> roots_of(const Quartic& q, double width, bool first_only = false) {
-  QuarticRootOptions options;
-  options.resolution = 1e-12;
-  options.tolerance = 1e-15;
-  options.first_only = first_only;
-  std::vector<double> out;
-  quartic_roots(q, width, options, out);
+  std::vector<double> out(4);
+  out.resize(size_t(polynomial_roots(q.c, 0.0, width, out.data(), first_only ? 1 : 4)));
   return out;
 }
 

@@ -1,38 +1,14 @@
-#include "geometry/polynomial.hpp"
+#include "core/polynomial_roots.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace convray::geometry {
+#include "core/bracket_refine.hpp"
+
+namespace convray {
 namespace {
 
-// The one root of a polynomial monotone on [a, b] whose ends differ in sign: Newton steps
-// from the bracket's better end, falling back to bisection whenever a step leaves the
-// bracket or fails to halve it.
-double monotone_root(std::span<const double> c, std::span<const double> slope, double a, double b,
-                     double fa) {
-  double x = 0.5 * (a + b), width_before = b - a;
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    const double fx = evaluate_polynomial(c, x);
-    if (fx == 0.0) return x;
-    // Keep f(a) of the sign of fa and f(b) of the other.
-    if ((fx < 0.0) == (fa < 0.0)) {
-      a = x;
-    } else {
-      b = x;
-    }
-    const double dx = evaluate_polynomial(slope, x);
-    double next = dx != 0.0 ? x - fx / dx : a;
-    const double width = b - a;
-    if (!(next > a && next < b) || width > 0.5 * width_before) next = a + 0.5 * width;
-    width_before = width;
-    if (!(next > a && next < b)) break;  // the bracket is as small as doubles allow
-    x = next;
-  }
-  return std::abs(evaluate_polynomial(c, a)) < std::abs(evaluate_polynomial(c, b)) ? a : b;
-}
-
-int roots_of_degree(std::span<const double> c, double lo, double hi, double* out) {
+int brackets_of_degree(std::span<const double> c, double lo, double hi, RootBracket* out) {
   int degree = int(c.size()) - 1;
   while (degree > 0 && c[size_t(degree)] == 0.0) --degree;
   if (degree <= 0) return 0;
@@ -40,7 +16,7 @@ int roots_of_degree(std::span<const double> c, double lo, double hi, double* out
   if (degree == 1) {
     const double x = -c[0] / c[1];
     if (x >= lo && x <= hi) {
-      out[0] = x;
+      out[0] = {x, x, 0.0, 0.0};  // a linear root is exact as one division rounds it
       return 1;
     }
     return 0;
@@ -48,31 +24,35 @@ int roots_of_degree(std::span<const double> c, double lo, double hi, double* out
   // Critical points: the derivative's roots split [lo, hi] into monotone pieces.
   double slope[kMaxPolynomialDegree];
   for (int i = 1; i <= degree; ++i) slope[i - 1] = double(i) * c[size_t(i)];
-  const std::span<const double> derivative(slope, size_t(degree));
   double ends[kMaxPolynomialDegree + 1];
   int end_count = 0;
   ends[end_count++] = lo;
-  end_count += roots_of_degree(derivative, lo, hi, ends + end_count);
+  end_count += polynomial_roots(std::span<const double>(slope, size_t(degree)), lo, hi,
+                                ends + end_count);
   ends[end_count++] = hi;
 
   // One root at most per monotone piece; exact zeros at the pieces' ends count once. (The
   // count never exceeds the degree, even if rounding makes more ends exactly zero.)
   int count = 0;
-  auto add = [&](double x) {
-    if (count < degree && (count == 0 || out[count - 1] != x)) out[count++] = x;
+  auto add = [&](const RootBracket& bracket) {
+    if (count == degree) return;
+    if (bracket.exact() && count > 0 && out[count - 1].exact() && out[count - 1].lo == bracket.lo) {
+      return;  // a zero shared by two pieces' ends
+    }
+    out[count++] = bracket;
   };
   double f_left = evaluate_polynomial(c, lo);
   for (int k = 0; k + 1 < end_count; ++k) {
     const double a = ends[k], b = ends[k + 1];
     const double f_right = evaluate_polynomial(c, b);
     if (f_left == 0.0) {
-      add(a);
+      add({a, a, 0.0, 0.0});
     } else if (f_right != 0.0 && (f_left < 0.0) != (f_right < 0.0) && b > a) {
-      add(monotone_root(c, derivative, a, b, f_left));
+      add({a, b, f_left, f_right});
     }
     f_left = f_right;
   }
-  if (f_left == 0.0) add(hi);
+  if (f_left == 0.0) add({hi, hi, 0.0, 0.0});
   return count;
 }
 
@@ -84,9 +64,27 @@ double evaluate_polynomial(std::span<const double> c, double x) {
   return value;
 }
 
-int polynomial_roots(std::span<const double> c, double lo, double hi, double* out) {
+int polynomial_brackets(std::span<const double> c, double lo, double hi, RootBracket* out) {
   if (c.size() > size_t(kMaxPolynomialDegree) + 1 || !(lo <= hi)) return 0;
-  return roots_of_degree(c, lo, hi, out);
+  return brackets_of_degree(c, lo, hi, out);
+}
+
+double refine_polynomial_root(std::span<const double> c, const RootBracket& bracket) {
+  if (bracket.exact()) return bracket.lo;
+  return refine_bracket(bracket.lo, bracket.hi, bracket.f_lo, bracket.f_hi,
+                        [c](double x) { return evaluate_polynomial(c, x); });
+}
+
+int polynomial_roots(std::span<const double> c, double lo, double hi, double* out,
+                     int max_roots) {
+  RootBracket brackets[kMaxPolynomialDegree];
+  const int bracket_count = polynomial_brackets(c, lo, hi, brackets);
+  int count = 0;
+  for (int k = 0; k < bracket_count && count < max_roots; ++k) {
+    const double x = refine_polynomial_root(c, brackets[k]);
+    if (count == 0 || out[count - 1] != x) out[count++] = x;  // a root on a shared end
+  }
+  return count;
 }
 
 int quadratic_roots(double a, double half_b, double c, double out[2]) {
@@ -109,4 +107,4 @@ int quadratic_roots(double a, double half_b, double c, double out[2]) {
   return 2;
 }
 
-}  // namespace convray::geometry
+}  // namespace convray

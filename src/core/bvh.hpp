@@ -1,6 +1,7 @@
 #pragma once
-// A bounding volume hierarchy over boxes (mesh triangles, a world's objects, a CSG's
-// children), built with binned surface-area heuristic splits. Traversal visits the primitives
+// The one bounding volume hierarchy over boxes (mesh triangles, a world's objects, a CSG's
+// children, the Cauchy surface's truncation boxes), built with binned surface-area heuristic
+// splits. Traversal visits the primitives
 // of the leaves whose boxes the ray meets, nearer child first, and lets a closest-hit query
 // narrow the ray as it goes; the point query visits the primitives whose leaves hold a point
 // (CSG's inside tests). The slow exact twin is a loop over every primitive; tests compare.
@@ -13,7 +14,7 @@
 #include "core/box.hpp"
 #include "core/ray.hpp"
 
-namespace convray::geometry {
+namespace convray {
 
 class Bvh {
  public:
@@ -38,6 +39,12 @@ class Bvh {
   template <class Visit>
   bool any_at(const Vec3& p, Visit&& visit) const;
 
+  // Calls visit(primitive, best) for every primitive of every leaf whose box is nearer to p
+  // than `best` (a distance), nearer child first; visit may lower best (double&) to prune what
+  // follows. A nearest-point query: boxes must hold their primitives, padded for rounding.
+  template <class Visit>
+  void nearer_than(const Vec3& p, double& best, Visit&& visit) const;
+
  private:
   struct Node {
     Box3 box;
@@ -46,6 +53,12 @@ class Bvh {
     uint8_t axis = 0;     // interior: the split axis
   };
   struct Slabs;  // the ray's per-axis reciprocal directions
+
+  // The depth-first walk of the queries: a node is entered where enter(node) holds; a leaf's
+  // primitives go to visit(primitive), which ends the walk by returning true (and walk returns
+  // true); first_child_first(index, node) orders an interior node's children.
+  template <class Enter, class VisitLeaf, class FirstChildFirst>
+  bool walk(Enter&& enter, VisitLeaf&& visit, FirstChildFirst&& first_child_first) const;
 
   void build(std::span<const Box3> boxes, std::vector<Vec3>& centroids, uint32_t node,
              uint32_t begin, uint32_t end, int max_leaf_size, int depth);
@@ -76,35 +89,8 @@ inline bool ray_meets_box(const Vec3& origin, const Vec3& inverse_direction, con
   return true;
 }
 
-template <class Visit>
-void Bvh::traverse(const Ray& ray, double tmin, double& tmax, Visit&& visit) const {
-  if (nodes_.empty()) return;
-  const Vec3 inverse = 1.0 / ray.direction;
-  uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (!ray_meets_box(ray.origin, inverse, node.box, tmin, tmax)) continue;
-    if (node.count > 0) {
-      for (uint32_t i = node.offset; i < node.offset + node.count; ++i) visit(order_[i], tmax);
-      continue;
-    }
-    // Push the far child first so that the near one is visited first.
-    const auto index = uint32_t(&node - nodes_.data());
-    const uint32_t first = index + 1, second = node.offset;
-    if (ray.direction[node.axis] < 0.0) {
-      stack[top++] = first;
-      stack[top++] = second;
-    } else {
-      stack[top++] = second;
-      stack[top++] = first;
-    }
-  }
-}
-
-template <class Visit>
-bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
+template <class Enter, class VisitLeaf, class FirstChildFirst>
+bool Bvh::walk(Enter&& enter, VisitLeaf&& visit, FirstChildFirst&& first_child_first) const {
   if (nodes_.empty()) return false;
   uint32_t stack[128];
   int top = 0;
@@ -112,17 +98,52 @@ bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
   while (top > 0) {
     const uint32_t index = stack[--top];
     const Node& node = nodes_[index];
-    if (!contains(node.box, p)) continue;
+    if (!enter(node)) continue;
     if (node.count > 0) {
       for (uint32_t i = node.offset; i < node.offset + node.count; ++i) {
         if (visit(order_[i])) return true;
       }
       continue;
     }
-    stack[top++] = node.offset;
-    stack[top++] = index + 1;
+    // The child to visit first goes on the stack last. The first child follows its parent.
+    const bool first_first = first_child_first(index, node);
+    stack[top++] = first_first ? node.offset : index + 1;
+    stack[top++] = first_first ? index + 1 : node.offset;
   }
   return false;
 }
 
-}  // namespace convray::geometry
+template <class Visit>
+void Bvh::traverse(const Ray& ray, double tmin, double& tmax, Visit&& visit) const {
+  const Vec3 inverse = 1.0 / ray.direction;
+  walk([&](const Node& node) { return ray_meets_box(ray.origin, inverse, node.box, tmin, tmax); },
+       [&](uint32_t primitive) { return visit(primitive, tmax), false; },
+       // Nearer child first: the first child holds the lower side of the split axis.
+       [&](uint32_t, const Node& node) { return !(ray.direction[node.axis] < 0.0); });
+}
+
+template <class Visit>
+bool Bvh::any_at(const Vec3& p, Visit&& visit) const {
+  return walk([&](const Node& node) { return contains(node.box, p); },
+              [&](uint32_t primitive) { return bool(visit(primitive)); },
+              [](uint32_t, const Node&) { return true; });
+}
+
+// Squared distance from p to `box`; 0 inside.
+inline double box_distance2(const Vec3& p, const Box3& box) {
+  const Vec3 outside = glm::max(glm::max(box.lo - p, p - box.hi), Vec3(0.0));
+  return glm::dot(outside, outside);
+}
+
+template <class Visit>
+void Bvh::nearer_than(const Vec3& p, double& best, Visit&& visit) const {
+  walk([&](const Node& node) { return box_distance2(p, node.box) < best * best; },
+       [&](uint32_t primitive) { return visit(primitive, best), false; },
+       // Nearer child first.
+       [&](uint32_t index, const Node& node) {
+         return !(box_distance2(p, nodes_[node.offset].box) <
+                  box_distance2(p, nodes_[index + 1].box));
+       });
+}
+
+}  // namespace convray

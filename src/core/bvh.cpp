@@ -1,9 +1,9 @@
-#include "geometry/bvh.hpp"
+#include "core/bvh.hpp"
 
 #include <algorithm>
 #include <numeric>
 
-namespace convray::geometry {
+namespace convray {
 namespace {
 
 constexpr int kBins = 16;
@@ -126,4 +126,4 @@ uint32_t Bvh::split(std::span<const Box3> boxes, const std::vector<Vec3>& centro
   return uint32_t(middle - order_.begin());
 }
 
-}  // namespace convray::geometry
+}  // namespace convray
