@@ -4,8 +4,8 @@
 // for tori seen from afar). The roots of the derivative split the interval into pieces where
 // the polynomial is monotone; each piece whose ends differ in sign holds exactly one root
 // (its bracket), refined by the one bracketed refiner (core/bracket_refine.hpp). Used by the
-// shapes of geometry/ (tori, polynomial surfaces, lathes, sors, outlines) and by the sphere
-// sweep of implicit/ (the quartic of blob spheres along a ray).
+// shapes of geometry/ (tori, polynomial surfaces, lathes, sors, outlines); the exact twin of
+// the sphere sweep's faster Bernstein isolator (implicit/quartic_roots.hpp).
 #include <span>
 
 namespace convray {

@@ -1,7 +1,11 @@
 #pragma once
 // De Casteljau's split of a polynomial in Bernstein form on [0, 1]: the control points of the
-// same polynomial over [0, s] and over [s, 1]. The one split of the Bernstein solver
-// (bezier_clip's clipping and subdivision).
+// same polynomial over [0, s] and over [s, 1]. The one split of the Bernstein solvers
+// (bezier_clip's clipping and subdivision, quartic_roots' isolation).
+//
+// de_casteljau_split interpolates x + s (y - x); de_casteljau_halve splits at s = 1/2 with the
+// midpoint 0.5 (x + y), which rounds once (exactly half the rounded sum) where the general
+// form rounds twice, so halving stays the exact average the quartic isolation was built on.
 #include <array>
 #include <cstddef>
 #include <type_traits>
@@ -31,6 +35,13 @@ void de_casteljau_split(const std::array<double, N>& b, double s,
                         std::type_identity_t<std::array<double, N>>* left,
                         std::type_identity_t<std::array<double, N>>* right) {
   de_casteljau(b, [s](double x, double y) { return x + s * (y - x); }, left, right);
+}
+
+// Splits at the middle.
+template <size_t N>
+void de_casteljau_halve(const std::array<double, N>& b, std::array<double, N>& left,
+                        std::array<double, N>& right) {
+  de_casteljau(b, [](double x, double y) { return 0.5 * (x + y); }, &left, &right);
 }
 
 }  // namespace convray::implicit

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/polynomial_roots.hpp"
 #include "implicit/insertion_sort.hpp"
 #include "implicit/quartic.hpp"
+#include "implicit/quartic_roots.hpp"
 #include "implicit/surface_impl.hpp"
 
 namespace convray::implicit {
@@ -142,10 +142,14 @@ bool SphereSweep::solve(double lo, double hi) {
   for (const ActiveSphere& a : active_) q += sphere_term(a.k, a.h2, a.tc - lo);
   stats_.field_evaluations += active_.size();
   q.c[0] -= s_.threshold;
+  roots_.clear();
+  QuarticRootOptions options;
   const bool first_only = request_.mode != RootMode::all;
-  roots_.resize(q.c.size() - 1);  // room for the quartic's four roots
-  roots_.resize(
-      size_t(polynomial_roots(q.c, 0.0, hi - lo, roots_.data(), first_only ? 1 : 4)));
+  options.first_only = first_only;
+  const double ulps_of_t = 4.0 * std::numeric_limits<double>::epsilon() *
+                          std::max(std::abs(lo), std::abs(hi));
+  options.resolution = std::max(ulps_of_t, 1e-9 * s_.min_radius);
+  quartic_roots(q, hi - lo, options, roots_);
   bool found = false;
   for (double v : roots_) {
     const double t = lo + v;

@@ -65,8 +65,9 @@ void check_split(std::mt19937_64& rng) {
   const double c = 2.0 * unit(rng) - 1.0;
   const std::array<double, N> b = bernstein_of(from_roots<N>(c, roots));
   const double s = unit(rng);
-  std::array<double, N> left, right;
+  std::array<double, N> left, right, half_left, half_right;
   de_casteljau_split(b, s, &left, &right);
+  de_casteljau_halve(b, half_left, half_right);
   const double tolerance = 1e-12;
   EXPECT_NEAR(left.front(), from_roots_value<N>(c, roots, 0.0), tolerance);
   EXPECT_NEAR(left.back(), from_roots_value<N>(c, roots, s), tolerance);
@@ -77,17 +78,33 @@ void check_split(std::mt19937_64& rng) {
     EXPECT_NEAR(bernstein_value(left, u), from_roots_value<N>(c, roots, s * u), tolerance);
     EXPECT_NEAR(bernstein_value(right, u), from_roots_value<N>(c, roots, s + (1 - s) * u),
                 tolerance);
+    EXPECT_NEAR(bernstein_value(half_left, u), from_roots_value<N>(c, roots, 0.5 * u), tolerance);
+    EXPECT_NEAR(bernstein_value(half_right, u), from_roots_value<N>(c, roots, 0.5 + 0.5 * u),
+                tolerance);
   }
 }
 
 TEST(DeCasteljau, HalvesAreThePolynomialOnEachSideOfTheSplit) {
   std::mt19937_64 rng(14);
   for (int trial = 0; trial < 50; ++trial) {
-    check_split<5>(rng);  // quartics
+    check_split<5>(rng);  // quartics, as quartic_roots isolates
     check_split<7>(rng);  // degree 6, as bezier_clip clips
   }
 }
 
+// Halving by midpoints is the exact average: both halves meet at the same middle value, and
+// the split at s = 1/2 agrees with it to rounding.
+TEST(DeCasteljau, HalvingAgreesWithTheSplitAtOneHalf) {
+  const std::array<double, 5> b = {1.0, -3.0, 2.5, 0.25, -1.0};
+  std::array<double, 5> left, right, split_left, split_right;
+  de_casteljau_halve(b, left, right);
+  de_casteljau_split(b, 0.5, &split_left, &split_right);
+  EXPECT_EQ(left.back(), right.front());
+  for (size_t k = 0; k < b.size(); ++k) {
+    EXPECT_NEAR(left[k], split_left[k], 1e-15);
+    EXPECT_NEAR(right[k], split_right[k], 1e-15);
+  }
+}
 
 }  // namespace
 }  // namespace convray::implicit
