@@ -200,6 +200,7 @@ scene::Scene Parser::parse_scene() {
       impl_->fail_here("expected a statement, found " + impl_->describe(impl_->settle()));
     }
   }
+  impl_->close_open_files();
   apply_legacy_gamma(scene);
   for (const auto& action : impl_->parse_end_actions) action(scene);
   return scene;
