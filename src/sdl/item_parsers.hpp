@@ -53,6 +53,7 @@ scene::ObjectPtr parse_isosurface(Parser& parser);
 scene::ObjectPtr parse_lathe(Parser& parser);
 scene::ObjectPtr parse_polygon(Parser& parser);
 scene::ObjectPtr parse_sor(Parser& parser);
+scene::ObjectPtr parse_bicubic_patch(Parser& parser);  // as a mesh of smooth triangles
 scene::ObjectPtr parse_height_field(Parser& parser);
 scene::ObjectPtr parse_polynomial(Parser& parser);  // poly, cubic, quartic, quadric
 scene::ObjectPtr parse_disc(Parser& parser);

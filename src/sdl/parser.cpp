@@ -312,6 +312,11 @@ double Parser::parse_float_before_points() {
   return parse_float();
 }
 
+Vec3 Parser::parse_vector_before_points() {
+  ScopedValue points_follow(impl_->less_starts_vector, 1);
+  return parse_vector();
+}
+
 std::string Parser::parse_string() {
   impl_->settle();
   const TokenRef at = impl_->ref();
