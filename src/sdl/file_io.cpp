@@ -1,10 +1,12 @@
 // POV-Ray's file directives: `#fopen NAME "file" read | write | append`, `#write (NAME, ...)`,
 // `#read (NAME, ID, ...)`, `#fclose NAME`. As the povray binary does (checked by
 // tests/app/povray_file_io_test.cpp):
-//   - #write writes strings as they are, floats as C's %g, vectors as <%g,%g,...>;
+//   - #write writes strings as they are, floats as C's %g, vectors as <%g,%g,...> and a space;
 //   - #read reads comma-separated quoted strings, floats and <vectors> and #declares the
 //     identifiers; at the end of the file it closes the file, whose name is then undefined
-//     (`#while (defined(F))` reads to the end), and leaves the identifiers unread undefined.
+//     (`#while (defined(F))` reads to the end): right after a value that no comma follows,
+//     or when no value is left (the identifier keeps its value). Reading a file closed so
+//     reads nothing, without an error.
 // POV-Ray's I/O restrictions: a file is written only in the output image's folder (where a
 // relative name goes) or the scene's folder, each with what lies below it; it is read from
 // the folders a scene may read (Parser::Impl::resolve), the output folder first. What a scene
@@ -117,15 +119,32 @@ std::optional<Value> read_vector(const OpenFile& file, std::size_t& pos, std::st
   return make_value(vector);
 }
 
-// The next value of a file being read; nothing (and no error) at its end.
-std::optional<Value> read_file_value(OpenFile& file, std::string& error) {
-  skip_separators(file, file.pos);
-  if (file.pos >= file.text.size()) return std::nullopt;
+std::optional<Value> read_item(OpenFile& file, std::string& error) {
   if (file.text[file.pos] == '"') return read_string(file, file.pos, error);
   if (file.text[file.pos] == '<') return read_vector(file, file.pos, error);
   const std::optional<double> number = read_number(file, file.pos, error);
   if (!number) return std::nullopt;
   return make_value(*number);
+}
+
+// The next value of a file being read; nothing (and no error) at its end. `at_end` tells
+// that the file ended right after the value, before a comma: POV-Ray closes it then (a
+// value followed by "," and the end leaves it open until the next #read finds nothing).
+std::optional<Value> read_file_value(OpenFile& file, std::string& error, bool& at_end) {
+  skip_separators(file, file.pos);
+  if (file.pos >= file.text.size()) return std::nullopt;
+  std::optional<Value> value = read_item(file, error);
+  if (!value) return std::nullopt;
+  while (file.pos < file.text.size() &&
+         std::isspace(static_cast<unsigned char>(file.text[file.pos]))) {
+    ++file.pos;
+  }
+  if (file.pos < file.text.size() && file.text[file.pos] == ',') {
+    ++file.pos;
+  } else {
+    at_end = file.pos >= file.text.size();
+  }
+  return value;
 }
 
 }  // namespace
@@ -180,6 +199,7 @@ void Parser::Impl::directive_fopen(TokenRef) {
       fail(file_at, "#fopen ... append: cannot read '" + file.path + "'");
     }
   }
+  ended_files.erase(handle);
   open_files.emplace(handle, std::move(file));
 }
 
@@ -221,7 +241,7 @@ void Parser::Impl::directive_write(TokenRef) {
     } else if (const Vector* v = value.get<Vector>(); v && !v->color) {
       text += "<";
       for (int k = 0; k < v->size; ++k) text += (k ? "," : "") + g_format(v->v[size_t(k)]);
-      text += ">";
+      text += "> ";  // POV-Ray's trailing space
     } else {
       fail(item_at, "#write writes strings, floats and vectors, found " + type_name(value));
     }
@@ -241,8 +261,10 @@ void Parser::Impl::directive_read(TokenRef) {
   expect_symbol('(', "after #read");
   const TokenRef handle_at = ref();
   const std::string handle(expect_identifier_raw("in #read"));
-  if (const auto found = open_files.find(handle);
-      found == open_files.end() || found->second.writing) {
+  const auto opened = open_files.find(handle);
+  // A file #read closed at its end reads nothing more, without an error, as in POV-Ray.
+  const bool ended = opened == open_files.end() && ended_files.count(handle) > 0;
+  if (!ended && (opened == open_files.end() || opened->second.writing)) {
     fail(handle_at, "#read: '" + handle + "' is not a file opened for reading");
   }
   while (accept_symbol(',')) {
@@ -252,14 +274,17 @@ void Parser::Impl::directive_read(TokenRef) {
     if (found == open_files.end()) continue;  // the end of the file came: nothing more is read
     OpenFile& file = found->second;
     std::string error;
-    std::optional<Value> value = read_file_value(file, error);
+    bool at_end = false;
+    std::optional<Value> value = read_file_value(file, error, at_end);
     if (!error.empty()) fail(name_at, "#read '" + file.path + "': " + error);
-    if (!value) {
-      open_files.erase(found);
-      continue;
+    if (value) {
+      value->loc = loc(name_at);
+      store(scopes.front().serial, name, std::move(*value));
     }
-    value->loc = loc(name_at);
-    store(scopes.front().serial, name, std::move(*value));
+    if (!value || at_end) {
+      open_files.erase(handle);
+      ended_files.insert(handle);
+    }
   }
   expect_symbol(')', "at the end of #read");
 }

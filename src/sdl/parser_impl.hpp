@@ -26,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -170,6 +171,7 @@ struct Parser::Impl {
   bool assumed_gamma_given = false;  // global_settings { assumed_gamma ... } was read
   std::vector<std::function<void(const scene::Scene&)>> parse_end_actions;  // at_parse_end
   NameMap<OpenFile> open_files;  // by the identifier #fopen gave them
+  std::set<std::string, std::less<>> ended_files;  // closed by #read at their end
 
   int nesting_depth = 0;
   int open_blocks = 0;

@@ -92,7 +92,7 @@ TEST(PovRayMacroReference, NoCommaIsNeededAfterAnItemArgument) {
       "M(sphere { 0, 1 } -y, 2)\n"
       "#declare T = texture { pigment { rgb 1 } }\n"
       "M(texture { T } <1, 2, 3>, 4)\n";
-  EXPECT_NE(convray_debug(scene).find("0.0,-1.0,0.0|2.0"), std::string::npos);
+  EXPECT_NE(convray_debug(scene).find("-0.0,-1.0,-0.0|2.0"), std::string::npos);
   EXPECT_NE(scene_error("#macro M(A, B) #end M(1 2)").first_line.find("expected ')'"),
             std::string::npos);
   SKIP_WITHOUT_POVRAY();
