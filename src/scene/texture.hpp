@@ -96,8 +96,8 @@ struct PatternSpace {
   Vec3 brick_size{8.0, 3.0, 4.5};     // brick only: one brick with its mortar
   double mortar = 0.5;                // brick only: the mortar's width
   double agate_turb = 1.0;            // agate only: the weight of its turbulence
-  double control0 = 0.0;              // quilted only: the seam's two cubic controls
-  double control1 = 1.0;
+  double control0 = 1.0;              // quilted only: the seam's two cubic controls; both
+  double control1 = 1.0;              // 1 by default (measured with the povray binary)
   int noise_generator = 2;            // POV-Ray's noise generator: 1 original, 2 range-corrected
   std::shared_ptr<const Function> function;  // function only
   Turbulence turbulence;
