@@ -240,7 +240,10 @@ void Parser::Impl::directive_write(TokenRef) {
       text += g_format(*f);
     } else if (const Vector* v = value.get<Vector>(); v && !v->color) {
       text += "<";
-      for (int k = 0; k < v->size; ++k) text += (k ? "," : "") + g_format(v->v[size_t(k)]);
+      for (int k = 0; k < v->size; ++k) {
+        if (k > 0) text += ',';
+        text += g_format(v->v[size_t(k)]);
+      }
       text += "> ";  // POV-Ray's trailing space
     } else {
       fail(item_at, "#write writes strings, floats and vectors, found " + type_name(value));
