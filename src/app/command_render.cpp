@@ -61,6 +61,8 @@ sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame,
   p.library_paths = o.library_paths;
   p.read_folders = o.read_folders;
   p.read_folders.push_back(std::filesystem::path(o.output).parent_path().string());
+  p.write_folder = std::filesystem::path(o.output).parent_path().string();
+  if (p.write_folder.empty()) p.write_folder = ".";
   p.read_anywhere = o.read_anywhere;
   p.declares = o.declares;
   p.object_queries = geometry_object_queries();

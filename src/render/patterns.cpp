@@ -8,6 +8,7 @@
 #include "render/noise.hpp"
 #include "render/noise_patterns.hpp"
 #include "render/sample_hash.hpp"
+#include "render/warps.hpp"
 
 namespace convray::render {
 
@@ -91,12 +92,28 @@ double mandel(const Vec3& q, int iterations) {
   return 1.0;
 }
 
+// POV-Ray's quilted, measured with the povray binary at random points and along rays from a
+// cell's centre for several controls (agrees to 5e-9, the probes' printing): with v the
+// point's offset from its unit cell's centre, quilted_cubic(|v|) times
+// (|v.x| + |v.y| + |v.z|) * 2 / (3 sqrt 3), its absolute value (negative controls).
+double quilted(const Vec3& q, double control0, double control1) {
+  const Vec3 v = q - glm::floor(q) - Vec3(0.5);
+  const double l1 = std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
+  return std::abs(quilted_cubic(glm::length(v), control0, control1) * l1 * 2.0 /
+                  (3.0 * std::sqrt(3.0)));
+}
+
 double gradient(const Vec3& q, const Vec3& axis) {
   const double length = glm::length(axis);
   return length > 0.0 ? glm::dot(q, axis) / length : 0.0;
 }
 
 }  // namespace
+
+double quilted_cubic(double t, double control0, double control1) {
+  const double s = 1.0 - t;
+  return t * t * t + 3.0 * t * s * s * control0 + 3.0 * t * t * s * control1;
+}
 
 double triangle_wave(double v) {
   const double f = fract(v);
@@ -161,12 +178,14 @@ double raw_pattern_value(const scene::PatternSpace& space, const Vec3& q) {
       return hexagon_block(q);
     case Pattern::function:
       return (*space.function)(q.x, q.y, q.z);
+    case Pattern::quilted:
+      return quilted(q, space.control0, space.control1);
   }
   return 0.0;
 }
 
 double pattern_value(const scene::PatternSpace& space, const Vec3& world_point) {
-  return pattern_value_in_space(space, space.transform.inverse_point(world_point));
+  return pattern_value_in_space(space, pattern_point(space, world_point));
 }
 
 double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& pattern_point) {

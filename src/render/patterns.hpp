@@ -15,6 +15,7 @@
 //   planar    max(0, 1 - |y|); spherical max(0, 1 - |p|); cylindrical max(0, 1 - |(x, z)|);
 //   boxed     max(0, 1 - max(|x|, |y|, |z|))
 //   spiral1 N r + N (atan2(y, x) / 2 pi + 1/4) + z, r = |(x, y)|; triangle wave by default
+//   quilted   quilted_cubic(|v|) (|v.x| + |v.y| + |v.z|) 2 / (3 sqrt 3), v = fract(p) - 1/2
 //   mandel N  escape time of z -> z^2 + (x + iy) from z = x + iy, over N; 1 inside the set
 //   bozo, spotted, bumps, dents, granite, wrinkles, agate, marble and wood: POV-Ray's
 //             noise and formulas, matched to the binary (render/noise_patterns.hpp)
@@ -36,6 +37,10 @@ double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& patt
 
 // The raw function of the pattern at a pattern-space point: no turbulence, frequency or phase.
 double raw_pattern_value(const scene::PatternSpace& space, const Vec3& pattern_point);
+
+// quilted's cubic Bezier t^3 + 3 t (1 - t)^2 control0 + 3 t^2 (1 - t) control1: its value
+// and its normal are made of it (render/normal_perturbation.cpp).
+double quilted_cubic(double t, double control0, double control1);
 
 // The triangle wave of period 1: 0 at integers, 1 at half-integers, linear between.
 double triangle_wave(double v);

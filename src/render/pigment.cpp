@@ -3,7 +3,9 @@
 #include <algorithm>
 
 #include "render/image_map.hpp"
+#include "render/noise.hpp"
 #include "render/patterns.hpp"
+#include "render/warps.hpp"
 
 namespace convray::render {
 
@@ -80,6 +82,15 @@ const std::vector<ColorMapEntry>& default_color_map(Pattern pattern) {
 
 namespace {
 
+// Where an image_map is read: its space's point, moved by the plain turbulence as any
+// pattern's is (render/patterns.cpp).
+Vec3 image_map_point(const scene::PatternSpace& space, const Vec3& world_point) {
+  Vec3 q = pattern_point(space, world_point);
+  const scene::Turbulence& t = space.turbulence;
+  if (t.active()) q += t.amount * turbulence_vector(q, t.octaves, t.omega, t.lambda);
+  return q;
+}
+
 // The pigments of a pigment_map at `value`, as a colour map mixes its colours.
 Color lookup_pigment_map(const std::vector<scene::PigmentMapEntry>& map, double value,
                          const Vec3& world_point) {
@@ -128,8 +139,7 @@ Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& world_point) {
     case Pattern::solid:
       return pigment.color;
     case Pattern::image_map:
-      return image_map_color(*pigment.image_map,
-                             pigment.space.transform.inverse_point(world_point));
+      return image_map_color(*pigment.image_map, image_map_point(pigment.space, world_point));
     case Pattern::checker:
     case Pattern::brick:
     case Pattern::hexagon:

@@ -45,6 +45,7 @@ enum class Pattern {
   brick,        // block pattern: mortar (block 0) and bricks (block 1) in courses along y
   hexagon,      // block pattern: hexagons in the x-z plane, blocks 0, 1 and 2
   function,     // a user function of x, y, z (PatternSpace::function), wrapped like gradient
+  quilted,      // unit cubes with rounded seams shaped by control0 and control1
 };
 
 // A colour map's entries ascend in value (the parser makes them so, keeping POV-Ray's
@@ -64,6 +65,24 @@ struct Turbulence {
   bool active() const { return amount != Vec3(0.0); }
 };
 
+// POV-Ray's `warp { ... }`: a change of the pattern-space point that sits between the
+// transforms listed before it and those after it, where the scene lists it.
+//   turbulence  p + amount * (the turbulence vector at p), as the `turbulence` modifier
+//   repeat      the slab 0 <= p[axis] < width copied along the axis: copy k = floor(p[axis] /
+//               width) is moved back k widths, flipped on the `flip` axes when k is odd
+//               (p[axis] -> width - p[axis], the others negated), then moved by k * offset
+//               (measured with the povray binary: tests/render/povray_warp_test.cpp)
+struct Warp {
+  enum class Kind { turbulence, repeat };
+  Kind kind = Kind::turbulence;
+  Turbulence turbulence;  // turbulence
+  int axis = 0;           // repeat: 0, 1 or 2
+  double width = 1.0;     // repeat: > 0
+  Vec3 offset{0.0};       // repeat
+  Vec3 flip{0.0};         // repeat: nonzero components flip
+  Transform inner;        // the transforms listed before this warp (after the previous one)
+};
+
 // POV-Ray's wave types: how a pattern's value v = value * frequency + phase becomes the
 // value looked up in the map. `pattern_default`: triangle for marble, wood and spiral1, ramp otherwise.
 enum class Wave { pattern_default, ramp, triangle, sine, scallop, cubic, poly };
@@ -77,6 +96,8 @@ struct PatternSpace {
   Vec3 brick_size{8.0, 3.0, 4.5};     // brick only: one brick with its mortar
   double mortar = 0.5;                // brick only: the mortar's width
   double agate_turb = 1.0;            // agate only: the weight of its turbulence
+  double control0 = 1.0;              // quilted only: the seam's two cubic controls; both
+  double control1 = 1.0;              // 1 by default (measured with the povray binary)
   int noise_generator = 2;            // POV-Ray's noise generator: 1 original, 2 range-corrected
   std::shared_ptr<const Function> function;  // function only
   Turbulence turbulence;
@@ -84,7 +105,10 @@ struct PatternSpace {
   double phase = 0.0;
   Wave wave = Wave::pattern_default;
   double wave_exponent = 1.0;  // poly_wave's
-  Transform transform;     // pattern space -> world
+  // Listed warps, innermost (first listed) first; each carries the transforms listed before
+  // it. `transform` is then what was listed after the last warp (and the object's moves).
+  std::vector<Warp> warps;
+  Transform transform;     // pattern space -> world (without warps: all the transforms)
 };
 
 // Checker, brick and hexagon: the value is a block number that picks a listed colour.

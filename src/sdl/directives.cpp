@@ -89,10 +89,17 @@ void Parser::Impl::run_directive() {
       directive_macro(at);
       return;
     case Word::fopen:
+      directive_fopen(at);
+      return;
     case Word::fclose:
+      directive_fclose(at);
+      return;
     case Word::read:
+      directive_read(at);
+      return;
     case Word::write:
-      fail(at, "#" + std::string(t.view()) + ": file input and output are not supported");
+      directive_write(at);
+      return;
     default:
       break;
   }

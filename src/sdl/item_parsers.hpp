@@ -53,6 +53,7 @@ scene::ObjectPtr parse_isosurface(Parser& parser);
 scene::ObjectPtr parse_lathe(Parser& parser);
 scene::ObjectPtr parse_polygon(Parser& parser);
 scene::ObjectPtr parse_sor(Parser& parser);
+scene::ObjectPtr parse_bicubic_patch(Parser& parser);  // as a mesh of smooth triangles
 scene::ObjectPtr parse_height_field(Parser& parser);
 scene::ObjectPtr parse_polynomial(Parser& parser);  // poly, cubic, quartic, quadric
 scene::ObjectPtr parse_disc(Parser& parser);
@@ -109,6 +110,18 @@ void move_texture(scene::Texture& texture, const scene::Transform& transform);
 void move_pigment(scene::Pigment& pigment, const scene::Transform& transform);
 scene::TexturePtr moved_texture(const scene::TexturePtr& texture,
                                 const scene::Transform& transform);
+// A warp listed in a pigment (or a texture's pattern) acts on the pigments (textures) its map
+// picks too, as the povray binary draws them (textures/pigments/warp2.pov): appended to their
+// spaces as to the pattern's own. `warp.inner` is ignored: what was listed before the warp
+// is already in each space's transform.
+void warp_pigment(scene::Pigment& pigment, const scene::Warp& warp);
+void warp_texture(scene::Texture& texture, const scene::Warp& warp);
+// The transforms and warps of `space` (a pattern whose map entries are being read) applied to
+// an entry's pigment or texture.
+void place_in_space(scene::Pigment& pigment, const scene::PatternSpace& space);
+void place_in_space(scene::Texture& texture, const scene::PatternSpace& space);
+// `warp` appended to `space`: what was listed before it becomes its inner transform.
+void append_warp(scene::PatternSpace& space, scene::Warp warp);
 // Moves every texture inside `object` (CSG children, mesh faces, blob and convolution
 // components; not the object's own texture), copying the shared records it changes.
 void move_inner_textures(scene::Object& object, const scene::Transform& transform);

@@ -20,6 +20,16 @@
 #include "sdl/parser_impl.hpp"
 
 namespace convray::sdl {
+
+namespace {
+
+// An object, texture, pigment, ...: a value that is not a number, vector, string or array.
+bool is_scene_item(const Value& value) {
+  return value.is_set() && !value.get<double>() && !value.get<Vector>() &&
+         !value.get<std::string>() && !value.get<std::shared_ptr<Array>>();
+}
+
+}  // namespace
 void Parser::Impl::directive_macro(TokenRef at) {
   auto macro = std::make_shared<Macro>();
   macro->name = std::string(expect_identifier_raw("after #macro"));
@@ -113,6 +123,9 @@ void Parser::Impl::call_macro(std::shared_ptr<const Macro> macro, TokenRef at) {
       }
       ++count;
       if (accept_symbol(',')) continue;
+      // POV-Ray reads the next argument without a comma after an item, which no operator can
+      // continue (incdemo/shapes.pov: `Align_Object(Center_Object(...) -y, ...)`).
+      if (!at_symbol(')') && count < wanted && is_scene_item(arguments[count - 1])) continue;
       expect_symbol(')', "after the arguments of macro '" + name + "'");
       break;
     }

@@ -33,6 +33,9 @@ struct ParseOptions {
   // each with everything below it (util/read_permissions.hpp); or from anywhere.
   std::vector<std::string> read_folders;
   bool read_anywhere = false;
+  // Where #fopen ... write puts a relative file name: the output image's folder. Writing is
+  // allowed there and in the scene's own folder only; empty: #fopen for writing is an error.
+  std::string write_folder;
   // Declare=ID=value from the command line: float values.
   std::vector<std::pair<std::string, double>> declares;
   // Runaway scenes stop with an error at these limits.

@@ -10,7 +10,7 @@
 //     `right` spans the horizontal field of view. An orthographic camera then scales right
 //     and up by |look_at - location| / |direction| (found by rendering with POV-Ray 3.7.0.10:
 //     the point looked at appears as large as through the perspective camera; look_at
-//     defaults to <0, 0, 1>).
+//     defaults to <0, 0, 1>). So does one given neither right nor up, without an angle.
 //  2. look_at: direction, right and up are turned to look at the point, keeping their lengths
 //     and the handedness of right relative to up and direction:
 //       direction = unit(look_at - location), right = unit(sky x direction),
@@ -35,6 +35,7 @@ struct CameraItems {
   Vec3 sky{0.0, 1.0, 0.0};
   Vec3 look_at{0.0, 0.0, 1.0};
   bool has_look_at = false;
+  bool has_right_or_up = false;  // written in this camera (or the declared one it copies)
   int cylinder_type = 1;
   std::optional<double> angle;
   std::optional<double> vertical_angle;  // spherical's second angle
@@ -53,6 +54,7 @@ CameraItems items_of(const scene::Camera& camera) {
   items.right = camera.right;
   items.up = camera.up;
   items.look_at = camera.location + camera.direction;
+  items.has_right_or_up = true;  // its frame is final already
   return items;
 }
 
@@ -105,6 +107,7 @@ void parse_camera_item(Parser& parser, Block& block, CameraItems& items) {
       items.has_look_at = true;
       items.look_at_loc = loc;
     }
+    if (word == "right" || word == "up") items.has_right_or_up = true;
   } else if (word == "perspective" || word == "orthographic") {
     items.kind = word == "perspective" ? scene::Camera::Kind::perspective
                                        : scene::Camera::Kind::orthographic;
@@ -139,6 +142,19 @@ void parse_camera_item(Parser& parser, Block& block, CameraItems& items) {
   }
 }
 
+// An orthographic camera given an angle, or neither right nor up, shows the area the
+// perspective camera would show at the point looked at: right and up scaled by
+// |look_at - location| / |direction| (POV-Ray's documented second mode; measured with
+// POV-Ray 3.7.0.10 for both cases: textures/pigments/transmitfx.pov has neither).
+void spans_perspective_area(CameraItems& items) {
+  const double distance = glm::length(items.look_at - items.location);
+  const double length = glm::length(items.direction);
+  if (distance > 0.0 && length > 0.0) {
+    items.right *= distance / length;
+    items.up *= distance / length;
+  }
+}
+
 void apply_angle(Parser& parser, CameraItems& items) {
   const double angle = *items.angle;
   if (!(angle > 0.0 && angle < 180.0)) {
@@ -150,13 +166,7 @@ void apply_angle(Parser& parser, CameraItems& items) {
   if (items.direction == Vec3(0.0)) parser.fail(items.angle_loc, "camera direction is 0");
   const double length = 0.5 * glm::length(items.right) / std::tan(angle * kPi / 360.0);
   items.direction = glm::normalize(items.direction) * length;
-  if (items.kind == scene::Camera::Kind::orthographic) {
-    const double distance = glm::length(items.look_at - items.location);
-    if (distance > 0.0) {
-      items.right *= distance / length;
-      items.up *= distance / length;
-    }
-  }
+  if (items.kind == scene::Camera::Kind::orthographic) spans_perspective_area(items);
 }
 
 // The wide projections' angles, checked; the defaults as POV-Ray's.
@@ -221,7 +231,11 @@ scene::Camera parse_camera(Parser& parser) {
   while (block.more()) parse_camera_item(parser, block, items);
 
   const bool wide = is_wide(items.kind);
-  if (items.angle && !wide) apply_angle(parser, items);
+  if (items.angle && !wide) {
+    apply_angle(parser, items);
+  } else if (items.kind == scene::Camera::Kind::orthographic && !items.has_right_or_up) {
+    spans_perspective_area(items);
+  }
   if (items.has_look_at) apply_look_at(parser, items);
   for (const Vec3* v : {&items.direction, &items.right, &items.up}) {
     if (*v == Vec3(0.0)) parser.fail(loc, "camera direction, right and up must not be 0");

@@ -2,8 +2,9 @@
 //         face_indices {n, <a,b,c> [, t [, t2, t3]] ...} normal_indices {n, ...} ... }
 // Counts must match what the lists hold and every index must be in range: errors name the
 // list and the entry.
-#include <cmath>
 #include <glm/geometric.hpp>
+
+#include <cmath>
 
 #include "sdl/item_parsers.hpp"
 #include "sdl/object_builder.hpp"
@@ -17,7 +18,13 @@ template <class ReadItem>
 void parse_counted_list(Parser& parser, const std::string& name, ReadItem read_item) {
   const SourceLoc loc = take_keyword(parser);
   Block block(parser, name, loc);
-  const int declared = int_param(parser, "the number of " + name);
+  // The float reader stops at a '<': `14 <-1, -1, -1>` is a count and a first vector, not
+  // 14 < -1 (objects/mesh2.pov), as POV-Ray reads it.
+  const double count = parser.parse_float_before_points();
+  if (!std::isfinite(count) || std::abs(count) > 1e9) {
+    parser.fail(loc, name + ": the count must be a number of items");
+  }
+  const int declared = int(count);
   if (declared < 0) parser.fail(loc, name + ": the count must not be negative");
   int listed = 0;
   while (true) {

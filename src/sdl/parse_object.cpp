@@ -41,6 +41,7 @@ constexpr ShapeKeyword kShapes[] = {
     {"lathe", parse_lathe},
     {"polygon", parse_polygon},
     {"sor", parse_sor},
+    {"bicubic_patch", parse_bicubic_patch},
     {"height_field", parse_height_field},
     {"isosurface", parse_isosurface},
     {"poly", parse_polynomial},
@@ -110,7 +111,7 @@ scene::ObjectPtr parse_object_statement(Parser& parser) {
 }
 
 constexpr std::string_view kUnsupportedObjects[] = {
-    "polynomial", "parametric",    "julia_fractal", "bicubic_patch",
+    "polynomial", "parametric",    "julia_fractal",
     "sphere_sweep",  "ovus",          "lemon"};
 
 }  // namespace

@@ -137,9 +137,11 @@ bool parse_pigment_item(Parser& parser, scene::Pigment& pigment) {
     // them too (those after it do, through move_pigment), as the povray binary draws them.
     for (scene::PigmentMapEntry& entry : pigment.pigment_map) {
       scene::Pigment moved = *entry.pigment;
-      move_pigment(moved, pigment.space.transform);
+      place_in_space(moved, pigment.space);
       entry.pigment = std::make_shared<const scene::Pigment>(std::move(moved));
     }
+  } else if (at_word(parser, "warp")) {
+    warp_pigment(pigment, parse_warp(parser));
   } else if (parse_pattern_modifier(parser, pigment.space)) {
     return true;
   } else if (at_color_start(parser)) {
@@ -203,9 +205,6 @@ scene::Pigment parse_pigment(Parser& parser, const scene::Pigment& start) {
   }
   if (pigment.space.pattern == scene::Pattern::average && pigment.pigment_map.empty()) {
     parser.fail(loc, "an average pigment needs a pigment_map { [weight pigment] ... }");
-  }
-  if (pigment.space.pattern == scene::Pattern::image_map && pigment.space.turbulence.active()) {
-    parser.fail_unsupported(loc, "turbulence on an image_map is not supported yet by convray");
   }
   return pigment;
 }

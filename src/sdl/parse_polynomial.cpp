@@ -64,7 +64,8 @@ scene::ObjectPtr parse_polynomial(Parser& parser) {
   }
   if (word == "poly") {
     const SourceLoc order_at = parser.peek().loc;
-    polynomial.order = int_param(parser, "poly's order");
+    // `poly { 4 <...> }` (objects/primitiv.pov): the '<' starts the coefficients.
+    polynomial.order = int(parser.parse_float_before_points());
     if (polynomial.order < 2 || polynomial.order > kMaxOrder) {
       parser.fail(order_at, "poly's order must be from 2 to " + std::to_string(kMaxOrder) +
                                 " in convray (POV-Ray allows up to 15), found " +

@@ -23,6 +23,8 @@ bool parse_texture_item(Parser& parser, scene::Texture& texture) {
     texture.normal = parse_normal(parser, texture.normal);
   } else if (auto transform = parse_transform_modifier(parser)) {
     move_texture(texture, *transform);
+  } else if (texture.map && at_word(parser, "warp")) {
+    warp_texture(texture, parse_warp(parser));
   } else if (texture.map && at_any_word(parser, pattern_modifier_words())) {
     // Turbulence and the like bend the texture pattern.
     scene::TextureMap bent = *texture.map;

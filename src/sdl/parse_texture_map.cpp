@@ -62,7 +62,7 @@ void parse_texture_map_entries(Parser& parser, scene::TextureMap& map) {
     if (map.kind == Kind::average && !(value >= 0.0)) {
       parser.fail(loc, "an average's weight must not be negative, found " + number_text(value));
     }
-    move_texture(entry, map.space.transform);
+    place_in_space(entry, map.space);
     map.values.push_back(value);
     map.textures.push_back(std::make_shared<const scene::Texture>(std::move(entry)));
   }

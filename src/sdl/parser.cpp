@@ -200,6 +200,7 @@ scene::Scene Parser::parse_scene() {
       impl_->fail_here("expected a statement, found " + impl_->describe(impl_->settle()));
     }
   }
+  impl_->close_open_files();
   apply_legacy_gamma(scene);
   for (const auto& action : impl_->parse_end_actions) action(scene);
   return scene;
@@ -309,6 +310,11 @@ scene::Color Parser::parse_color() {
 double Parser::parse_float_before_points() {
   ScopedValue points_follow(impl_->less_starts_vector, 1);
   return parse_float();
+}
+
+Vec3 Parser::parse_vector_before_points() {
+  ScopedValue points_follow(impl_->less_starts_vector, 1);
+  return parse_vector();
 }
 
 std::string Parser::parse_string() {

@@ -68,6 +68,9 @@ class Parser {
   // A float followed by a list of points without a comma (`prism { 0, 1, 4 <-1, 0>, ...`):
   // a '<' after it starts the first point instead of comparing, as in POV-Ray.
   double parse_float_before_points();
+  // The same for a point followed by the next without a comma (`<1, 0, 2> <1, -1, 2>`, as
+  // teapot.inc lists a bicubic_patch's points).
+  Vec3 parse_vector_before_points();
   // After `[`, `(`: the optional comma between items, as POV-Ray accepts it.
   void accept_comma() { accept(","); }
 

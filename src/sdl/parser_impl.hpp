@@ -26,6 +26,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -134,6 +135,15 @@ struct Deprecation {
   bool once = false, warned = false;
 };
 
+// A file a scene opened with #fopen (sdl/file_io.cpp): read whole when opened, or written
+// whole (atomically) when closed.
+struct OpenFile {
+  std::string path;
+  bool writing = false;
+  std::string text;        // read: the contents; write: what #write gave so far
+  std::size_t pos = 0;     // read: the next byte
+};
+
 // Directive stops for skip(): which directives end a skip at nesting depth 0.
 enum class SkipStop : std::uint8_t { end, if_branch, switch_clause };
 
@@ -160,6 +170,8 @@ struct Parser::Impl {
   bool version_given = false;        // a #version directive was read
   bool assumed_gamma_given = false;  // global_settings { assumed_gamma ... } was read
   std::vector<std::function<void(const scene::Scene&)>> parse_end_actions;  // at_parse_end
+  NameMap<OpenFile> open_files;  // by the identifier #fopen gave them
+  std::set<std::string, std::less<>> ended_files;  // closed by #read at their end
 
   int nesting_depth = 0;
   int open_blocks = 0;
@@ -265,6 +277,15 @@ struct Parser::Impl {
   void directive_default();
   void accept_optional_semicolon();
   Value parse_rvalue();
+
+  // --- file_io.cpp: #fopen #fclose #read #write; files still open when the parse ends are
+  // closed (written) by close_open_files.
+  void directive_fopen(TokenRef at);
+  void directive_fclose(TokenRef at);
+  void directive_write(TokenRef at);
+  void directive_read(TokenRef at);
+  void close_open_files();
+  std::string writable_path(const std::string& name, TokenRef at) const;
 
   // --- control_flow.cpp
   void directive_if(Word kind, std::uint32_t at);

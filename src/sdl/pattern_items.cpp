@@ -1,5 +1,7 @@
 #include "sdl/pattern_items.hpp"
 
+#include "sdl/item_parsers.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -26,29 +28,32 @@ constexpr PatternKeyword kPatterns[] = {
     {"cylindrical", scene::Pattern::cylindrical}, {"boxed", scene::Pattern::boxed},
     {"spiral1", scene::Pattern::spiral1}, {"mandel", scene::Pattern::mandel},
     {"brick", scene::Pattern::brick},     {"hexagon", scene::Pattern::hexagon},
+    {"quilted", scene::Pattern::quilted},
 };
 
 constexpr std::string_view kPatternNames[] = {
     "checker", "gradient", "marble",  "wood",    "granite", "agate",    "bozo",  "radial",
     "onion",   "leopard",  "spotted", "ripples", "waves",   "wrinkles", "bumps", "dents",
-    "planar",  "spherical", "cylindrical", "boxed", "spiral1", "mandel",  "brick", "hexagon"};
+    "planar",  "spherical", "cylindrical", "boxed", "spiral1", "mandel",  "brick", "hexagon",
+    "quilted"};
 
 // POV-Ray patterns we know by name, so that they get "not supported yet" rather than
 // "unexpected".
 constexpr std::string_view kUnsupportedPatterns[] = {
     "crackle",      "cells",         "spiral2",
     "julia",        "bump_map",      "pigment_pattern",
-    "object",     "density_file", "quilted",      "facets",
+    "object",     "density_file", "facets",
     "average",      "tiling",        "pavement",    "square",
     "triangular", "slope",        "aoi",          "image_pattern", "magnet",
     "normal_map", "slope_map",    "material_map", "texture_map",   "tiles",       "uv_mapping",
-    "warp",       "gradient_map"};
+    "gradient_map"};
 
 constexpr std::string_view kModifiers[] = {
     "turbulence",    "octaves",     "omega",        "lambda",     "frequency", "phase",
     "translate",     "rotate",      "scale",        "matrix",     "transform", "ramp_wave",
     "triangle_wave", "sine_wave",   "scallop_wave", "cubic_wave", "poly_wave", "noise_generator",
-    "agate_turb",    "quick_color", "quick_colour", "brick_size", "mortar"};
+    "agate_turb",    "quick_color", "quick_colour", "brick_size", "mortar",    "warp",
+    "control0",      "control1"};
 
 }  // namespace
 
@@ -93,8 +98,6 @@ std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::Patte
   return std::nullopt;
 }
 
-namespace {
-
 void parse_turbulence_setting(Parser& parser, const std::string& word,
                               scene::Turbulence& turbulence) {
   if (word == "turbulence") {
@@ -112,6 +115,8 @@ void parse_turbulence_setting(Parser& parser, const std::string& word,
     turbulence.lambda = float_param(parser, "lambda");
   }
 }
+
+namespace {
 
 // Generators 1 and 2 are POV-Ray's own noise (render/noise.hpp); 3, Perlin's improved noise,
 // is not matched yet and is drawn with 2, which the warning says.
@@ -135,6 +140,12 @@ bool parse_pattern_modifier(Parser& parser, scene::PatternSpace& space) {
     return true;
   }
   if (!at_any_word(parser, kModifiers)) return false;
+  if (at_word(parser, "warp")) {
+    // The transforms so far go with the warp; those after it start afresh. (Pigments and
+    // textures with maps warp their entries too: parse_pigment.cpp, parse_texture.cpp.)
+    append_warp(space, parse_warp(parser));
+    return true;
+  }
   const std::string word = parser.peek().text;
   const SourceLoc loc = take_keyword(parser);
   if (word == "turbulence" || word == "octaves" || word == "omega" || word == "lambda") {
@@ -162,6 +173,10 @@ bool parse_pattern_modifier(Parser& parser, scene::PatternSpace& space) {
     if (!(space.brick_size.x > 0.0 && space.brick_size.y > 0.0 && space.brick_size.z > 0.0)) {
       parser.fail(loc, "brick_size must be positive along every axis");
     }
+  } else if (word == "control0") {
+    space.control0 = float_param(parser, "control0");  // quilted's; others ignore it
+  } else if (word == "control1") {
+    space.control1 = float_param(parser, "control1");
   } else if (word == "mortar") {
     space.mortar = float_param(parser, "mortar");
   } else if (word == "quick_color" || word == "quick_colour") {

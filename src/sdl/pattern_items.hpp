@@ -23,6 +23,13 @@ std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::Patte
 // Parses one pattern modifier into `space` if the next token is one.
 bool parse_pattern_modifier(Parser& parser, scene::PatternSpace& space);
 
+// `turbulence`, `octaves`, `omega` or `lambda` (already consumed as `word`) and its value.
+void parse_turbulence_setting(Parser& parser, const std::string& word,
+                              scene::Turbulence& turbulence);
+
+// `warp { ... }` at the `warp` keyword (sdl/parse_warp.cpp); its `inner` is left for the caller.
+scene::Warp parse_warp(Parser& parser);
+
 // Whether the next token can start a colour (a colour keyword, `<`, a number, a declared
 // colour or float).
 bool at_color_start(Parser& parser);

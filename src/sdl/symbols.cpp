@@ -76,7 +76,7 @@ const Value* Parser::Impl::lookup(std::string_view name) const {
 
 bool Parser::Impl::is_declared(std::string_view name) const {
   return lookup(name) != nullptr || macros.find(name) != macros.end() ||
-         functions.find(name) != functions.end();
+         functions.find(name) != functions.end() || open_files.find(name) != open_files.end();
 }
 
 void Parser::Impl::store(std::uint64_t scope_serial, std::string_view name, Value value) {

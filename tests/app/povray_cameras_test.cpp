@@ -42,5 +42,23 @@ INSTANTIATE_TEST_SUITE_P(WideProjections, PovRayCameras,
                                            "ultra_wide_angle angle 100 up 1.5 * y",
                                            "ultra_wide_angle"));
 
+// An orthographic camera shows the perspective camera's area at the point looked at when it
+// is given an angle or neither right nor up (textures/pigments/transmitfx.pov); right and up
+// written out give the area themselves.
+class PovRayOrthographic : public PovRayPictureTest,
+                           public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(PovRayOrthographic, SameAreaAsPovRay) {
+  SKIP_WITHOUT_POVRAY();
+  const std::string scene = std::string("#version 3.7;\nglobal_settings { assumed_gamma 1 }\n") +
+                            "camera { orthographic location <0, 6, -3> " + GetParam() +
+                            " look_at <0, 0, 1> }\n" + kWorld;
+  EXPECT_GE(compare("orthographic", scene), 35.0) << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Areas, PovRayOrthographic,
+                         ::testing::Values("", "angle 40", "direction 2 * z",
+                                           "right 8 * x up 6 * y", "up 3 * y"));
+
 }  // namespace
 }  // namespace convray::testing

@@ -40,10 +40,11 @@ TEST_F(PovRayPolynomial, QuadricCubicAndPolyAsPovRay) {
       "translate <-2.5, 0.5, 0> }\n"
       "intersection { object { QCone_Y } box { <-1, -1.5, -1>, <1, 0, 1> } "
       "pigment { color rgb <1, 0.8, 0.2> } translate <2.5, 1, 0> }\n"
-      // x^3 - y = 0 as a cubic, and a poly of order 4 (the torus R = 1, r = 0.6), in boxes.
+      // x^3 - y = 0 as a cubic, and a poly of order 4 (the torus R = 1, r = 0.6), in boxes;
+      // no comma after the order, as objects/primitiv.pov writes it.
       "intersection { cubic { <1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1, 0, 0, 0> } "
       "box { -1, 1 } pigment { color rgb <0.8, 0.2, 0.8> } translate <0, 1.2, 0> }\n"
-      "intersection { poly { 4, <1, 0, 0, 0, 2, 0, 0, 2, 0, -2.72, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,"
+      "intersection { poly { 4 <1, 0, 0, 0, 2, 0, 0, 2, 0, -2.72, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,"
       " 1, 0, 0, 2, 0, 1.28, 0, 0, 0, 0, 1, 0, -2.72, 0, 0.4096> sturm } box { -2, 2 } "
       "pigment { color rgb <0.3, 0.9, 0.9> } translate <0, -1, -1> }\n";
   EXPECT_GE(compare("polynomials", scene), 35.0);

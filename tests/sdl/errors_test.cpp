@@ -70,8 +70,11 @@ TEST(Errors, UnknownDirectives) {
   ASSERT_EQ(stray.warnings.size(), 1u);
   EXPECT_EQ(stray.warnings[0].substr(0, stray.warnings[0].find('\n')),
             "test.pov:1:25: '#' without a directive name, ignored");
-  EXPECT_TRUE(fails_at(scene_error("#fopen F \"x.txt\" read"), 1, 1,
-                       "#fopen: file input and output are not supported"));
+  // Without an output folder (a parse without a render) no file may be written.
+  EXPECT_TRUE(fails_at(scene_error("#fopen F \"x.txt\" write"), 1, 10,
+                       "#fopen 'x.txt' for writing: this command writes no files"));
+  EXPECT_TRUE(fails_at(scene_error("#fopen F \"x.txt\" wrote"), 1, 18,
+                       "expected read, write or append after #fopen's file name, found 'wrote'"));
 }
 
 TEST(Errors, DeclarationSyntax) {

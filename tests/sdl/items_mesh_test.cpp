@@ -72,6 +72,20 @@ TEST(ItemsMesh, Mesh2NormalsDefaultToTheFaceIndices) {
   EXPECT_EQ(mesh.faces[0].normals[0], 2);
 }
 
+TEST(ItemsMesh, Mesh2CountsWithoutACommaBeforeAVector) {
+  // objects/mesh2.pov writes `vertex_vectors { 14 <-1, -1, -1>, ...`: a count, then a vector
+  // (POV-Ray renders it), not the comparison 14 < -1.
+  const auto object = only_object(parse(R"(
+    mesh2 {
+      vertex_vectors { 3 <-1, 0, 0>, x, y }
+      face_indices { 1 <2, 1, 0> }
+    })"));
+  const auto& mesh = shape_of<scene::TriangleMesh>(object);
+  ASSERT_EQ(mesh.vertices.size(), 3u);
+  expect_near(mesh.vertices[0], Vec3(-1, 0, 0));
+  EXPECT_EQ(mesh.faces[0].vertices[0], 2);
+}
+
 TEST(ItemsMesh, Mesh2Errors) {
   EXPECT_TRUE(fails_with("mesh2 {\n vertex_vectors { 3, 0, x }\n face_indices { 1, <0,1,2> } }", 2,
                          2, "vertex_vectors says 3 but lists 2"));

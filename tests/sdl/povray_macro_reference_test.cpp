@@ -84,5 +84,20 @@ TEST(PovRayMacroReference, AnUndeclaredIdentifierIsAnError) {
             std::string::npos);
 }
 
+TEST(PovRayMacroReference, NoCommaIsNeededAfterAnItemArgument) {
+  // incdemo/shapes.pov: `Align_Object(Center_Object(...) -y, <0, 0, 0>)`.
+  const std::string scene =
+      "#macro M(O, V, W) #debug concat(vstr(3, V, \",\", 0, 1), \"|\", str(W, 0, 1), \"\\n\") "
+      "#end\n"
+      "M(sphere { 0, 1 } -y, 2)\n"
+      "#declare T = texture { pigment { rgb 1 } }\n"
+      "M(texture { T } <1, 2, 3>, 4)\n";
+  EXPECT_NE(convray_debug(scene).find("-0.0,-1.0,-0.0|2.0"), std::string::npos);
+  EXPECT_NE(scene_error("#macro M(A, B) #end M(1 2)").first_line.find("expected ')'"),
+            std::string::npos);
+  SKIP_WITHOUT_POVRAY();
+  expect_as_povray(scene);
+}
+
 }  // namespace
 }  // namespace convray::sdl
