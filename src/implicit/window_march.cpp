@@ -238,7 +238,8 @@ bool chord_excluded(const Value& a, const Value& b, double bend) {
   const double h = b.t - a.t;
   const double sign = a.g < 0.0 ? 1.0 : -1.0;  // below T: how far F rises; above: sinks
   const double ga = sign * a.g, gb = sign * b.g;  // both negative
-  if (!(bend > 0.0)) return true;  // F is linear: the chord itself
+  if (!(bend >= 0.0)) return false;  // no bound (NaN): nothing can be excluded
+  if (bend == 0.0) return true;       // F is linear: the chord itself
   const double s = std::clamp(0.5 * h + (gb - ga) / (bend * h), 0.0, h);
   return ga + (gb - ga) * s / h + 0.5 * bend * s * (h - s) < 0.0;
 }
