@@ -1,6 +1,7 @@
-// The quartic helpers of the sphere sweep against direct evaluation, and its root finder
-// against quartics built from known roots: distinct, close pairs, double roots, none, and
-// roots exactly on the ends of the interval.
+// The quartic helpers of the sphere sweep against direct evaluation, and both quartic root
+// finders (the sweep's Bernstein isolator and its exact twin, the one polynomial root finder of
+// core/polynomial_roots.hpp) against quartics built from known roots: distinct, close pairs,
+// double roots, none, and roots exactly on the ends of the interval; then against each other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -27,14 +28,31 @@ Quartic from_roots(double a, const std::array<double, 4>& r) {
   return q;
 }
 
-std::vector<double> roots_of(const Quartic& q, double width, bool first_only = false) {
-  QuarticRootOptions options;
-  options.resolution = 1e-12;
-  options.first_only = first_only;
+enum class Finder { bernstein_isolator, polynomial_roots };
+
+std::vector<double> roots_with(Finder finder, const Quartic& q, double width, bool first_only) {
   std::vector<double> out;
-  quartic_roots(q, width, options, out);
+  if (finder == Finder::bernstein_isolator) {
+    QuarticRootOptions options;
+    options.resolution = 1e-12;
+    options.first_only = first_only;
+    quartic_roots(q, width, options, out);
+  } else {
+    out.resize(4);
+    out.resize(size_t(polynomial_roots(q.c, 0.0, width, out.data(), first_only ? 1 : 4)));
+  }
   return out;
 }
+
+// Each root-finding test runs with both finders.
+class QuarticRoots : public testing::TestWithParam<Finder> {
+ protected:
+  std::vector<double> roots_of(const Quartic& q, double width, bool first_only = false) const {
+    return roots_with(GetParam(), q, width, first_only);
+  }
+};
+INSTANTIATE_TEST_SUITE_P(BothFinders, QuarticRoots,
+                         testing::Values(Finder::bernstein_isolator, Finder::polynomial_roots));
 
 TEST(Quartic, SphereTermShiftAndBernsteinAgreeWithDirectEvaluation) {
   std::mt19937_64 rng(41);
@@ -63,7 +81,7 @@ TEST(Quartic, SphereTermShiftAndBernsteinAgreeWithDirectEvaluation) {
   }
 }
 
-TEST(QuarticRoots, FindsKnownDistinctRootsInAscendingOrder) {
+TEST_P(QuarticRoots, FindsKnownDistinctRootsInAscendingOrder) {
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> u(-0.5, 1.5), scale(-3.0, 3.0);
   for (int trial = 0; trial < 2000; ++trial) {
@@ -94,7 +112,7 @@ TEST(QuarticRoots, FindsKnownDistinctRootsInAscendingOrder) {
   }
 }
 
-TEST(QuarticRoots, SeparatesACloseCrossingPair) {
+TEST_P(QuarticRoots, SeparatesACloseCrossingPair) {
   // The coefficients' rounding (1e-16 of values about 6) moves roots by that over the slope
   // at them, about 12 gap: the pair is as well conditioned as 1e-15 / gap.
   for (double gap : {1e-2, 1e-4, 1e-6}) {
@@ -106,7 +124,7 @@ TEST(QuarticRoots, SeparatesACloseCrossingPair) {
   }
 }
 
-TEST(QuarticRoots, TellsATouchFromAMiss) {
+TEST_P(QuarticRoots, TellsATouchFromAMiss) {
   // (v - 0.25)^2 (v + 1)(v - 3) touches zero at 0.25 from below: at most the touching pair,
   // never a root elsewhere.
   const Quartic touch = from_roots(1.0, {0.25, 0.25, -1.0, 3.0});
@@ -125,7 +143,7 @@ TEST(QuarticRoots, TellsATouchFromAMiss) {
   EXPECT_NEAR(found[1], 0.25 + half_gap, 1e-9);
 }
 
-TEST(QuarticRoots, RootsOnTheEndsAreReportedOnce) {
+TEST_P(QuarticRoots, RootsOnTheEndsAreReportedOnce) {
   const std::vector<double> both = roots_of(from_roots(2.0, {0.0, 0.5, 1.0, 4.0}), 1.0);
   ASSERT_EQ(both.size(), 3u);
   EXPECT_EQ(both[0], 0.0);
@@ -136,7 +154,7 @@ TEST(QuarticRoots, RootsOnTheEndsAreReportedOnce) {
   EXPECT_TRUE(roots_of(from_roots(1.0, {0.5, -2.0, 2.0, 3.0}), 0.0).empty());
 }
 
-TEST(QuarticRoots, WorksOnWideAndNarrowIntervals) {
+TEST_P(QuarticRoots, WorksOnWideAndNarrowIntervals) {
   for (double width : {1e-5, 1.0, 1e4}) {
     const Quartic q = from_roots(1.0 / (width * width * width * width),
                                  {0.3 * width, 0.7 * width, 1.5 * width, -width});
@@ -169,7 +187,7 @@ namespace {
 // The sweep's Bernstein isolator (the fast path) against the one polynomial root finder
 // (core/polynomial_roots.hpp, its exact twin): quartics with known real roots, some of them
 // in [0, width], the same roots from both, to a few ulps.
-TEST(QuarticRoots, AgreesWithTheOnePolynomialRootFinder) {
+TEST(QuarticFinders, TheIsolatorAgreesWithTheOnePolynomialRootFinder) {
   std::mt19937_64 rng(91);
   std::uniform_real_distribution<double> u(-0.5, 1.5), scale(0.1, 10.0);
   int roots = 0;
