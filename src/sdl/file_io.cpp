@@ -16,8 +16,6 @@
 #include <cstdlib>
 #include <optional>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "sdl/diagnostics.hpp"
 #include "sdl/parser_impl.hpp"
@@ -33,15 +31,6 @@ std::string g_format(double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%g", value);
   return buffer;
-}
-
-bool read_whole(const std::string& path, std::string& text) {
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) return false;
-  std::ostringstream contents;
-  contents << stream.rdbuf();
-  text = std::move(contents).str();
-  return !stream.bad();
 }
 
 // Whether `path` lies in `folder` or below it (both made absolute, links resolved where
@@ -189,13 +178,13 @@ void Parser::Impl::directive_fopen(TokenRef) {
     } else {
       file.path = resolve(name, loc(file_at), true);
     }
-    if (!read_whole(file.path, file.text)) fail(file_at, "cannot read '" + file.path + "'");
+    if (!read_file(file.path, file.text)) fail(file_at, "cannot read '" + file.path + "'");
   } else {
     file.writing = true;
     file.path = writable_path(name, file_at);
     std::error_code error;
     if (word == "append" && fs::is_regular_file(file.path, error) &&
-        !read_whole(file.path, file.text)) {
+        !read_file(file.path, file.text)) {
       fail(file_at, "#fopen ... append: cannot read '" + file.path + "'");
     }
   }

@@ -16,9 +16,7 @@
 #include "util/printable.hpp"
 
 namespace convray::sdl {
-namespace {
 
-// Reads a whole file; false when it cannot be read.
 bool read_file(const std::string& path, std::string& text) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) return false;
@@ -29,6 +27,8 @@ bool read_file(const std::string& path, std::string& text) {
   text = std::move(contents).str();
   return !stream.bad();
 }
+
+namespace {
 
 std::string describe_file_kind(const std::filesystem::file_status& status) {
   namespace fs = std::filesystem;

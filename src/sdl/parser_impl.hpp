@@ -415,4 +415,7 @@ inline Value make_value(const Vector& v) { return Value{v, {}}; }
 inline Value make_value(std::string s) { return Value{std::move(s), {}}; }
 inline bool is_true(double f) { return f > kEpsilon || f < -kEpsilon; }
 
+// Reads a whole regular file (scenes, includes, #read files); false when it cannot be read.
+bool read_file(const std::string& path, std::string& text);
+
 }  // namespace convray::sdl
