@@ -44,6 +44,7 @@ World::World(const scene::Scene& scene, implicit::SupportCache* cache, implicit:
     index->inside_boxes.push_back(shape->inside_bounds());
     bounds_.push_back(box);
     blocks_light_.push_back(shape->blocks_light() ? 1 : 0);
+    blockers_ += blocks_light_.back();
     shapes_.push_back(std::move(shape));
     if (is_empty(box)) continue;  // no surface at all: never hit
     if (is_finite(box)) {
@@ -68,6 +69,7 @@ std::optional<Crossing> World::first_hit(const Ray& ray, double tmin, double tma
   std::optional<Crossing> nearest;
   double reach = tmax;
   const bool skip_blockers = objects == Objects::letting_light_through;
+  if (skip_blockers && blockers_ == shapes_.size()) return std::nullopt;
   auto ask = [&](size_t id, double& limit) {
     if (skip_blockers && blocks_light_[id]) return;
     if (auto c = shapes_[id]->first_crossing(ray, tmin, limit, stats)) {
@@ -82,6 +84,7 @@ std::optional<Crossing> World::first_hit(const Ray& ray, double tmin, double tma
 }
 
 bool World::blocked(const Ray& ray, double tmin, double tmax, TraceStats& stats) const {
+  if (blockers_ == 0) return false;  // most scenes: no second walk of the hierarchy
   bool found = false;
   auto ask = [&](size_t id, double& limit) {
     if (found || !blocks_light_[id]) return;

@@ -80,6 +80,7 @@ class World {
 
   std::vector<ShapePtr> shapes_;
   std::vector<uint8_t> blocks_light_;  // shapes_[i]->blocks_light(), asked once
+  size_t blockers_ = 0;                // how many do
   std::vector<Box3> bounds_;
   std::unique_ptr<const Index> index_;
 };
