@@ -285,10 +285,12 @@ class Marcher {
   bool bracket(const Value& a, const Value& b, const Value* third = nullptr);
   bool search_window(const Value& a, const Value& b);
   // How far F may bend away from its chord towards T over [a, b] (a on the side of `g`);
-  // `quick`: a larger bound that costs less (ClusterField::curvature's `anywhere`).
+  // `quick`: a larger bound that costs less (ClusterField::curvature's `anywhere`), which
+  // exists only below T (how far F bends down); above T it is the window's own bound.
   double bend_towards_threshold(double a, double b, double g, bool quick = false) const {
     return field_.curvature(a, b, !(g < 0.0), quick);
   }
+  static bool has_quick_bound(double g) { return g < 0.0; }
   double step_from(const Value& a, double to, double min_step, double max_step) const;
 
   const Impl& s_;
@@ -319,8 +321,10 @@ bool Marcher::bracket(const Value& a, const Value& b, const Value* third) {
 // a and b on the same side of T: halve until the chord bound excludes a crossing pair, or
 // the window is narrower than the resolution.
 bool Marcher::search_window(const Value& a, const Value& b) {
-  if (chord_excluded(a, b, bend_towards_threshold(a.t, b.t, a.g, true)) ||
-      chord_excluded(a, b, bend_towards_threshold(a.t, b.t, a.g))) {
+  const auto excluded = [&](bool quick) {
+    return chord_excluded(a, b, bend_towards_threshold(a.t, b.t, a.g, quick));
+  };
+  if ((has_quick_bound(a.g) && excluded(true)) || excluded(false)) {
     return false;
   }
   if (b.t - a.t < kResolution * s_.min_radius) return false;
@@ -345,7 +349,7 @@ double Marcher::step_from(const Value& a, double to, double min_step, double max
     const auto fits = [&](bool quick) {
       return bend_towards_threshold(a.t, end, a.g, quick) * window * window < 8.0 * gap;
     };
-    if (!fits(true) && !fits(false)) return best;
+    if (!(has_quick_bound(a.g) && fits(true)) && !fits(false)) return best;
     best = window;
     if (window >= max_step || end >= to) return best;
   }
