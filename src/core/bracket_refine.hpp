@@ -14,6 +14,11 @@
 // with `guess_slope` when that is given (the window march passes the root of the cubic Hermite
 // interpolant of its samples, accurate to O(h^4), and the interpolant's slope there). Returns
 // the end of the final bracket where |g| is smaller (or the exact zero).
+//
+// `tolerance` (absolute, in t) widens the resolution: the bracket may stop that wide, still
+// closed around the root. The tracers ask for a fraction of the kernel's radius far below what
+// a picture or their tests can see (the last secant steps to a few ulps cost one or two exact
+// evaluations of every primitive near the ray per root).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,7 +28,8 @@ namespace convray {
 template <class Function>
 double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&& g,
                       double guess = std::numeric_limits<double>::quiet_NaN(),
-                      double guess_slope = std::numeric_limits<double>::quiet_NaN()) {
+                      double guess_slope = std::numeric_limits<double>::quiet_NaN(),
+                      double tolerance = 0.0) {
   const bool lo_negative = g_lo < 0.0;
   double t = guess > lo && guess < hi ? guess : (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
   double last_t = 0.0, last_g = 0.0;  // the previous point evaluated, for the secant
@@ -31,8 +37,9 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
   double previous_step = hi - lo;
   int slow = 0;  // steps in a row that did not halve
   for (int iteration = 0; iteration < 200; ++iteration) {
-    const double resolution =
-        8.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi));
+    const double resolution = std::max(
+        tolerance,
+        8.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi)));
     if (hi - lo <= resolution) break;
     if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     const double value = g(t);
