@@ -24,33 +24,40 @@ TriangleBatch::TriangleBatch(std::span<const Triangle> triangles, std::span<cons
 }
 
 void TriangleBatch::assign(std::span<const Triangle> triangles) {
-  const size_t n = triangles.size();
+  resize(triangles.size());
+  for (size_t i = 0; i < triangles.size(); ++i) set_lane(i, triangles[i], triangle_frame(triangles[i]));
+}
+
+void TriangleBatch::assign(std::span<const Triangle> triangles,
+                           std::span<const TriangleFrame> frames, std::span<const uint32_t> ids) {
+  resize(ids.size());
+  for (size_t i = 0; i < ids.size(); ++i) set_lane(i, triangles[ids[i]], frames[ids[i]]);
+}
+
+void TriangleBatch::resize(size_t n) {
   for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->assign(n, 0.0);
   for (EdgeArrays& e : edges_) {
     for (auto* v : {&e.vx, &e.vy, &e.vz, &e.ux, &e.uy, &e.uz, &e.mx, &e.my, &e.mz, &e.length}) {
       v->assign(n, 0.0);
     }
   }
-  for (size_t i = 0; i < n; ++i) {
-    const Vec3 v[3] = {triangles[i].a, triangles[i].b, triangles[i].c};
-    const Vec3 cross = glm::cross(v[1] - v[0], v[2] - v[0]);
-    const double cross_length = glm::length(cross);
-    // Zero-area triangles keep all-zero lanes (no NaN) and weight 0.
-    if (!(cross_length > 0.0) || !std::isfinite(cross_length)) continue;
-    const Vec3 normal = cross / cross_length;
-    nx_[i] = normal.x, ny_[i] = normal.y, nz_[i] = normal.z;
-    weight_[i] = 1.0;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 edge = v[(k + 1) % 3] - v[k];
-      const double length = glm::length(edge);
-      const Vec3 u = edge / length;
-      const Vec3 m = glm::cross(u, normal);
-      EdgeArrays& e = edges_[k];
-      e.vx[i] = v[k].x, e.vy[i] = v[k].y, e.vz[i] = v[k].z;
-      e.ux[i] = u.x, e.uy[i] = u.y, e.uz[i] = u.z;
-      e.mx[i] = m.x, e.my[i] = m.y, e.mz[i] = m.z;
-      e.length[i] = length;
-    }
+}
+
+// Zero-area triangles keep all-zero lanes (no NaN) and weight 0.
+void TriangleBatch::set_lane(size_t i, const Triangle& triangle, const TriangleFrame& frame) {
+  if (!frame.has_area()) return;
+  const Vec3 v[3] = {triangle.a, triangle.b, triangle.c};
+  const Vec3& normal = frame.normal;
+  nx_[i] = normal.x, ny_[i] = normal.y, nz_[i] = normal.z;
+  weight_[i] = 1.0;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& u = frame.direction[k];
+    const Vec3 m = glm::cross(u, normal);
+    EdgeArrays& e = edges_[k];
+    e.vx[i] = v[k].x, e.vy[i] = v[k].y, e.vz[i] = v[k].z;
+    e.ux[i] = u.x, e.uy[i] = u.y, e.uz[i] = u.z;
+    e.mx[i] = m.x, e.my[i] = m.y, e.mz[i] = m.z;
+    e.length[i] = frame.length[k];
   }
 }
 

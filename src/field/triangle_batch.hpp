@@ -9,6 +9,7 @@
 
 #include "field/sample.hpp"
 #include "field/triangle.hpp"
+#include "field/triangle_frame.hpp"
 
 namespace convray::field {
 
@@ -25,6 +26,10 @@ class TriangleBatch {
   TriangleBatch(std::span<const Triangle> triangles, std::span<const double> weights);
   // Replaces the triangles, reusing the arrays' storage (for small batches built per query).
   void assign(std::span<const Triangle> triangles);
+  // The same for triangles[ids[k]], from their frames computed once per mesh (frames[i] that
+  // of triangles[i]): the same lanes, bit for bit, without a square root or division per ray.
+  void assign(std::span<const Triangle> triangles, std::span<const TriangleFrame> frames,
+              std::span<const uint32_t> ids);
 
   size_t size() const { return weight_.size(); }
 
@@ -47,6 +52,8 @@ class TriangleBatch {
     std::vector<double> length;
   };
   struct Accumulator;
+  void resize(size_t n);
+  void set_lane(size_t i, const Triangle& triangle, const TriangleFrame& frame);
   template <bool kGradient, class Index>
   void evaluate(const Vec3& p, double radius, size_t count, Index index,
                 Accumulator& acc) const;

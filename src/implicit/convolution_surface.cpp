@@ -135,6 +135,8 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
   arc_base = capsule_base + uint32_t(capsules.size());
   triangle_base = arc_base + uint32_t(arcs.size());
   spheres_only = capsules.empty() && arcs.empty() && triangles.empty();
+  frames.reserve(triangles.size());
+  for (const field::Triangle& t : triangles) frames.push_back(field::triangle_frame(t));
   for (size_t i = 0; i < sphere_radii.size(); ++i) {
     const double r2 = sphere_radii[i] * sphere_radii[i];
     sphere_weights.push_back(sphere_strengths[i] / (r2 * r2));
@@ -244,7 +246,7 @@ size_t ConvolutionSurface::memory_bytes() const {
          bytes(m.sphere_strengths) + bytes(m.sphere_weights) + bytes(m.capsules) +
          bytes(m.capsule_radii) + bytes(m.capsule_strengths) + bytes(m.capsule_is_blob) +
          bytes(m.arcs) + bytes(m.arc_radii) + bytes(m.arc_strengths) + bytes(m.triangles) +
-         bytes(m.groups) + m.index->memory_bytes();
+         bytes(m.frames) + bytes(m.groups) + m.index->memory_bytes();
 }
 
 field::FieldSample ConvolutionSurface::field(const Vec3& p) const {

@@ -66,7 +66,7 @@ LineCurvature::LineCurvature(const ConvolutionSurface::Impl& s, uint32_t id, con
   } else {
     const uint32_t i = id - s.triangle_base;
     const ConvolutionSurface::Impl::Group& g = s.group_of(i);
-    *this = LineCurvature(s.triangles[i], g.strength, g.radius, ray);
+    *this = LineCurvature(s.triangles[i], s.frames[i], g.strength, g.radius, ray);
     return;
   }
   lo_ = extent.lo;
@@ -80,19 +80,20 @@ LineCurvature::LineCurvature(const ConvolutionSurface::Impl& s, uint32_t id, con
   down_anywhere_ = weight_ * 4.0 * measure_ / r2_;  // what bend_down gives for any window
 }
 
-LineCurvature::LineCurvature(const field::Triangle& tri, double strength, double radius,
-                             const Ray& ray)
+LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFrame& frame,
+                             double strength, double radius, const Ray& ray)
     : weight_(std::abs(strength)),
       radius_(radius),
       r2_(radius * radius),
-      measure_(0.5 * glm::length(glm::cross(tri.b - tri.a, tri.c - tri.a))),
+      measure_(frame.area),
       length_(measure_),
       has_extent_(true),
       has_moments_(true),
       limit_(2.0 * kPi),
       flipped_(strength < 0.0),
-      triangle_(measure_ > 0.0),  // no area, no field
+      triangle_(frame.has_area()),  // no area, no field
       triangle_corners_(&tri),
+      frame_(&frame),
       ray_(&ray) {
   const Extent extent = extent_along(ray, std::array<Vec3, 3>{tri.a, tri.b, tri.c});
   lo_ = extent.lo;
@@ -107,13 +108,14 @@ void LineCurvature::prepare_triangle() const {
   const field::Triangle& tri = *triangle_corners_;
   const Ray& ray = *ray_;
   const Vec3 corners[3] = {tri.a, tri.b, tri.c};
-  const Vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
+  const Vec3& n = frame_->normal;
   height_[0] = glm::dot(n, ray.origin - tri.a);
   height_[1] = glm::dot(n, ray.direction);
   for (int k = 0; k < 3; ++k) {
     const Vec3& v = corners[k];
-    const Vec3 edge = corners[(k + 1) % 3] - v;
-    const Vec3 inward = glm::normalize(glm::cross(n, edge));  // in the plane, into the triangle
+    // In the plane, into the triangle; unit, as n and the edge's direction are unit and
+    // perpendicular.
+    const Vec3 inward = glm::cross(n, frame_->direction[k]);
     outside_[k][0] = -glm::dot(inward, ray.origin - v);
     outside_[k][1] = -glm::dot(inward, ray.direction);
   }

@@ -53,7 +53,9 @@ class LineCurvature {
   // `ray` must outlive this (a triangle's plane and edges are measured against it lazily).
   LineCurvature(const ConvolutionSurface::Impl& surface, uint32_t id, const Ray& ray);
   // A triangle of a mesh with this strength and radius (what the surface's id gives).
-  LineCurvature(const field::Triangle& triangle, double strength, double radius, const Ray& ray);
+  // `frame` (its normal, edges and area, computed once per mesh) must outlive this too.
+  LineCurvature(const field::Triangle& triangle, const field::TriangleFrame& frame,
+                double strength, double radius, const Ray& ray);
 
   // How far the field may bend up over the window t in [a, b] of the line, and down.
   double up(double a, double b) const { return flipped_ ? bend_down(a, b) : bend_up(a, b); }
@@ -90,6 +92,7 @@ class LineCurvature {
   // foot of p(t), each linear in t: value at t = 0 and slope.
   bool triangle_ = false;
   const field::Triangle* triangle_corners_ = nullptr;
+  const field::TriangleFrame* frame_ = nullptr;
   const Ray* ray_ = nullptr;
   mutable bool prepared_ = false;
   mutable double height_[2] = {0.0, 0.0};

@@ -12,6 +12,7 @@
 #include "field/point.hpp"
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
+#include "field/triangle_frame.hpp"
 #include "implicit/convolution_surface.hpp"
 
 namespace convray::implicit {
@@ -29,6 +30,7 @@ struct ConvolutionSurface::Impl {
   std::vector<double> arc_radii, arc_strengths;
   // Triangles of every mesh, one group (radius, strength) per mesh component.
   std::vector<field::Triangle> triangles;
+  std::vector<field::TriangleFrame> frames;  // one per triangle, for the per-ray batches
   struct Group {
     uint32_t first_triangle, end_triangle;
     double radius, strength;

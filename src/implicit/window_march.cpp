@@ -65,7 +65,7 @@ class ClusterField {
   };
   struct Batch {
     const Impl::Group* group = nullptr;
-    std::vector<field::Triangle> triangles;
+    std::vector<uint32_t> triangles;                // indices into the surface's triangles
     std::vector<double> enter, exit;                // the support along the ray
     std::vector<double> inside_enter, inside_exit;  // the whole triangle inside the ball
     std::vector<field::LineQuartic> quartics;       // in s = t - origin_t_
@@ -75,7 +75,7 @@ class ClusterField {
   template <Want kWant>
   field::FieldSample evaluate(double t);
   Batch& batch_for(const Impl::Group& group);
-  void add_triangle(Batch& b, const field::Triangle& triangle, double enter, double exit);
+  void add_triangle(Batch& b, uint32_t triangle, double enter, double exit);
 
   const Impl& s_;
   const Ray& ray_;
@@ -108,12 +108,14 @@ ClusterField::ClusterField(const Impl& s, const Ray& ray,
     }
     const uint32_t triangle = iv.primitive - s.triangle_base;
     const Impl::Group& group = s.group_of(triangle);
-    const field::Triangle& corners = s.triangles[triangle];
-    members_.push_back(
-        {iv.enter, iv.exit, LineCurvature(corners, group.strength, group.radius, ray)});
-    add_triangle(batch_for(group), corners, iv.enter, iv.exit);
+    members_.push_back({iv.enter, iv.exit,
+                        LineCurvature(s.triangles[triangle], s.frames[triangle], group.strength,
+                                      group.radius, ray)});
+    add_triangle(batch_for(group), triangle, iv.enter, iv.exit);
   }
-  for (size_t k = 0; k < batches_used_; ++k) batches_[k].batch.assign(batches_[k].triangles);
+  for (size_t k = 0; k < batches_used_; ++k) {
+    batches_[k].batch.assign(s.triangles, s.frames, batches_[k].triangles);
+  }
 }
 
 ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
@@ -132,9 +134,9 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   return b;
 }
 
-void ClusterField::add_triangle(Batch& b, const field::Triangle& triangle, double enter,
-                                double exit) {
-  b.triangles.push_back(triangle);
+void ClusterField::add_triangle(Batch& b, uint32_t index, double enter, double exit) {
+  const field::Triangle& triangle = s_.triangles[index];
+  b.triangles.push_back(index);
   b.enter.push_back(enter);
   b.exit.push_back(exit);
   // Where all three corners are within R of p(t): the intersection of their balls' chords.

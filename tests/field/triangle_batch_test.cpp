@@ -3,11 +3,13 @@
 // clipped, out of reach, zero-area lanes, subsets, and per-triangle output.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
 #include "field/triangle.hpp"
 #include "field/triangle_batch.hpp"
+#include "field/triangle_frame.hpp"
 
 namespace convray::field {
 namespace {
@@ -108,6 +110,43 @@ TEST(TriangleBatch, FarPointsGiveExactlyZero) {
   const FieldSample f = batch.field({-3, 0.5, 0.5}, 1.0);
   EXPECT_EQ(f.value, 0.0);
   EXPECT_EQ(f.gradient, Vec3(0.0));
+}
+
+// The per-ray batches of the window march are assigned from frames computed once per mesh
+// (triangle_frame.hpp) and a list of indices: the same lanes, bit for bit, as a batch made from
+// the same triangles' corners, zero-area ones included.
+TEST(TriangleBatch, AssignedFromFramesEqualsAssignedFromCorners) {
+  std::mt19937_64 rng(28);
+  const auto tris = random_triangles(rng, 80, 0.5);
+  std::vector<TriangleFrame> frames;
+  for (const Triangle& t : tris) frames.push_back(triangle_frame(t));
+  std::vector<uint32_t> ids;
+  std::vector<Triangle> picked;
+  for (uint32_t i = uint32_t(tris.size()); i-- > 0;) {
+    if (i % 3 == 0) continue;  // a subset, out of order, with both zero-area triangles
+    ids.push_back(i);
+    picked.push_back(tris[i]);
+  }
+  TriangleBatch from_frames;
+  from_frames.assign(tris, frames, ids);
+  const TriangleBatch from_corners(picked);
+  std::uniform_real_distribution<double> u(-1.2, 1.2);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    const double r = k % 2 ? 0.3 : 1.5;
+    EXPECT_EQ(from_frames.value(p, r), from_corners.value(p, r));
+    const FieldSample a = from_frames.field(p, r), b = from_corners.field(p, r);
+    EXPECT_EQ(a.value, b.value);
+    EXPECT_EQ(a.gradient, b.gradient);
+  }
+  // The frame itself: unit normal and edge directions, the edges' lengths, half the cross
+  // product's length as the area; nothing but the area for a zero-area triangle.
+  const TriangleFrame f = triangle_frame({{0, 0, 0}, {2, 0, 0}, {0, 1, 0}});
+  EXPECT_EQ(f.normal, Vec3(0, 0, 1));
+  EXPECT_EQ(f.direction[0], Vec3(1, 0, 0));
+  EXPECT_DOUBLE_EQ(f.length[1], std::sqrt(5.0));
+  EXPECT_EQ(f.area, 1.0);
+  EXPECT_FALSE(triangle_frame({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}).has_area());
 }
 
 TEST(TriangleBatch, EmptyBatchIsZero) {
