@@ -14,18 +14,26 @@ Span join(const Span& a, const Span& b) {
   return {std::min(a.enter, b.enter), std::max(a.exit, b.exit)};
 }
 
-// Narrows `span` to where g0 + t g1 >= 0.
-void clip_half_space(double g0, double g1, Span& span) {
+// Narrows `span` to where g0 + t g1 >= 0, t = -g0 / g1 given by the caller (clips against
+// parallel planes share one reciprocal, as TriangleSpanBatch's; g1 = 0 ignores t).
+void clip_half_space_at(double g0, double g1, double t, Span& span) {
   if (g1 == 0.0) {
     if (g0 < 0.0) span = Span{};
     return;
   }
-  const double t = -g0 / g1;
   if (g1 > 0.0) {
     span.enter = std::max(span.enter, t);
   } else {
     span.exit = std::min(span.exit, t);
   }
+}
+
+// 1 / x, with 1 for x = 0.
+double reciprocal(double x) { return 1.0 / (x != 0.0 ? x : 1.0); }
+
+// Narrows `span` to where g0 + t g1 >= 0.
+void clip_half_space(double g0, double g1, Span& span) {
+  clip_half_space_at(g0, g1, -g0 * reciprocal(g1), span);
 }
 
 // The body of a capsule: points within R of the axis line whose projection lies on the
@@ -48,15 +56,17 @@ Span capsule_body_span(const Vec3& origin, const Vec3& direction, const Vec3& a,
     if (glm::dot(wp, wp) > radius * radius) return {};
   } else {
     // Closest approach of the projected line to the axis, then the chord of the disk.
-    const double tc = -glm::dot(wp, dp) / dp2;
+    const double inv_dp2 = reciprocal(dp2);
+    const double tc = -glm::dot(wp, dp) * inv_dp2;
     const Vec3 closest = wp + tc * dp;
     const double q2 = glm::dot(closest, closest);
     if (q2 > radius * radius) return {};
-    const double half = std::sqrt((radius * radius - q2) / dp2);
+    const double half = std::sqrt((radius * radius - q2) * inv_dp2);
     span = {tc - half, tc + half};
   }
-  clip_half_space(ww, dw, span);                // projection >= 0
-  clip_half_space(length - ww, -dw, span);      // projection <= length
+  const double inv_dw = reciprocal(dw);
+  clip_half_space_at(ww, dw, -ww * inv_dw, span);                      // projection >= 0
+  clip_half_space_at(length - ww, -dw, (length - ww) * inv_dw, span);  // projection <= length
   return span.empty() ? Span{} : span;
 }
 
@@ -106,9 +116,10 @@ Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Trian
     // The slab |height| <= R holds the whole support: a cheap rejection first.
     const double h0 = glm::dot(origin - triangle.a, n);
     const double h1 = glm::dot(direction, n);
+    const double inv_h1 = reciprocal(h1);
     Span prism{-kInfinity, kInfinity};
-    clip_half_space(radius - h0, -h1, prism);
-    clip_half_space(radius + h0, h1, prism);
+    clip_half_space_at(radius - h0, -h1, (radius - h0) * inv_h1, prism);
+    clip_half_space_at(radius + h0, h1, -(radius + h0) * inv_h1, prism);
     if (prism.empty()) return {};
     for (int i = 0; i < 3 && !prism.empty(); ++i) {
       const Vec3 inward = glm::cross(n, vertex[(i + 1) % 3] - vertex[i]);

@@ -33,14 +33,22 @@ struct Lane {
   return {s.enter <= s.exit ? s.enter : kInfinity, s.enter <= s.exit ? s.exit : -kInfinity};
 }
 
-// Narrows `span` to where g0 + t g1 >= 0 (support_shapes.cpp's clip_half_space).
-[[gnu::always_inline]] inline Lane clip(double g0, double g1, Lane span) {
-  const double t = -g0 / (g1 != 0.0 ? g1 : 1.0);
+// Narrows `span` to where g0 + t g1 >= 0, t = -g0 / g1 given (support_shapes.cpp's
+// clip_half_space_at; g1 = 0 ignores t): clips against parallel planes share one reciprocal.
+[[gnu::always_inline]] inline Lane clip_at(double g0, double g1, double t, Lane span) {
   const double lower = g1 > 0.0 ? t : -kInfinity;  // the bound t gives, if any
   const double upper = g1 < 0.0 ? t : kInfinity;
   const double parallel_gap = g1 == 0.0 ? g0 : 0.0;  // < 0: the line is wholly outside
   return {most(most(span.enter, lower), parallel_gap < 0.0 ? kInfinity : -kInfinity),
           least(span.exit, upper)};
+}
+
+// 1 / x, with 1 for x = 0 (whose clips ignore t).
+[[gnu::always_inline]] inline double reciprocal(double x) { return 1.0 / (x != 0.0 ? x : 1.0); }
+
+// Narrows `span` to where g0 + t g1 >= 0 (support_shapes.cpp's clip_half_space).
+[[gnu::always_inline]] inline Lane clip(double g0, double g1, Lane span) {
+  return clip_at(g0, g1, -g0 * reciprocal(g1), span);
 }
 
 // Adds a normalized piece to the union.
@@ -68,15 +76,16 @@ struct Lane {
   const P dp = sub(d, mul(u, dw));
   const P wp = sub(w, mul(u, ww));
   const double dp2 = dot(dp, dp);
-  const double safe = dp2 > 0.0 ? dp2 : 1.0;
-  const double tc = -dot(wp, dp) / safe;
+  const double inv_dp2 = reciprocal(dp2);
+  const double tc = -dot(wp, dp) * inv_dp2;
   const P closest = add(wp, mul(dp, tc));
   // Parallel to the axis (dp2 = 0): the whole line, or nothing, by its distance to the axis.
   const double q2 = dp2 > 0.0 ? dot(closest, closest) : dot(wp, wp);
-  const double half = std::sqrt(q2 <= r2 ? (r2 - q2) / safe : 0.0);
+  const double half = std::sqrt(q2 <= r2 ? (r2 - q2) * inv_dp2 : 0.0);
   Lane span{dp2 > 0.0 ? tc - half : -kInfinity, dp2 > 0.0 ? tc + half : kInfinity};
-  span = clip(ww, dw, span);
-  span = clip(length - ww, -dw, span);
+  const double inv_dw = reciprocal(dw);
+  span = clip_at(ww, dw, -ww * inv_dw, span);
+  span = clip_at(length - ww, -dw, (length - ww) * inv_dw, span);
   const double miss = q2 <= r2 ? length : 0.0;  // 0: too far from the axis, or no edge
   return normal({miss > 0.0 ? span.enter : kInfinity, miss > 0.0 ? span.exit : -kInfinity});
 }
@@ -88,8 +97,9 @@ struct Lane {
   const P n = mul(n0, 1.0 / (n_length > 0.0 ? n_length : 1.0));
   Lane span{-kInfinity, kInfinity};
   const double h0 = dot(sub(o, a), n), h1 = dot(d, n);
-  span = clip(radius - h0, -h1, span);
-  span = clip(radius + h0, h1, span);
+  const double inv_h1 = reciprocal(h1);
+  span = clip_at(radius - h0, -h1, (radius - h0) * inv_h1, span);
+  span = clip_at(radius + h0, h1, -(radius + h0) * inv_h1, span);
   // Written out: the vectorizer takes no inner loops.
   const P in_ab = cross(n, sub(b, a)), in_bc = cross(n, sub(c, b)), in_ca = cross(n, sub(a, c));
   span = clip(dot(sub(o, a), in_ab), dot(d, in_ab), span);
