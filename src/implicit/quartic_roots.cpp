@@ -1,24 +1,12 @@
 #include "implicit/quartic_roots.hpp"
 
+#include "core/bernstein.hpp"
 #include "core/bracket_refine.hpp"
-#include "implicit/de_casteljau.hpp"
 
 namespace convray::implicit {
 namespace {
 
 using Control = std::array<double, 5>;
-
-// Sign changes along the control points, zeros skipped (Descartes' convention).
-int sign_variations(const Control& b) {
-  int count = 0;
-  double last = 0.0;
-  for (double x : b) {
-    if (x == 0.0) continue;
-    if (last != 0.0 && (x < 0.0) != (last < 0.0)) ++count;
-    last = x;
-  }
-  return count;
-}
 
 bool differ(double a, double b) { return (a < 0.0) != (b < 0.0); }
 
