@@ -84,10 +84,15 @@ void PolynomialSurface::crossings(const Ray& ray, double tmin, double tmax,
   int degree = order_;
   while (degree > 0 && c[degree] == 0.0) --degree;
   if (degree == 0) return;
-  // Every real root lies within Cauchy's bound: the unbounded span is clamped to it.
+  // Every real root x has |x| <= 2 max_k |c_(n-k) / c_n|^(1/k) (Fujiwara's bound, with
+  // c_0 / 2 for k = n): the unbounded span is clamped to it. Far tighter than Cauchy's
+  // 1 + max_k |c_k / c_n| for large coefficients, it spares the root finder halvings.
   double bound = 0.0;
-  for (int n = 0; n < degree; ++n) bound = std::max(bound, std::abs(c[n] / c[degree]));
-  const double hi = std::min(tmax - start, 1.0 + bound);
+  for (int k = 1; k <= degree; ++k) {
+    const double ratio = std::abs(c[degree - k] / c[degree]) * (k == degree ? 0.5 : 1.0);
+    bound = std::max(bound, std::pow(ratio, 1.0 / double(k)));
+  }
+  const double hi = std::min(tmax - start, bound > 0.0 ? 2.0 * bound : 1.0);  // c_n s^n: 0
   if (!(hi > 0.0)) return;
   double roots[kMaxPolynomialDegree];
   const int count = polynomial_roots(std::span<const double>(c, size_t(degree) + 1), 0.0, hi,

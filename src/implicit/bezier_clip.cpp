@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "implicit/de_casteljau.hpp"
+#include "core/bernstein.hpp"
 
 namespace convray::implicit {
 namespace {

@@ -5,6 +5,8 @@
 // the Bernstein control points over an interval (whose hull bounds q there).
 #include <array>
 
+#include "core/bernstein.hpp"
+
 namespace convray::implicit {
 
 struct Quartic {
@@ -34,23 +36,14 @@ inline Quartic sphere_term(double k, double h2, double vc) {
   return {{k * m * m, -4.0 * k * vc * m, k * (4.0 * vc * vc + 2.0 * m), -4.0 * k * vc, k}};
 }
 
-// The same quartic in w = v - d: q(w + d). Repeated synthetic division (Horner's scheme).
-inline Quartic shifted(const Quartic& q, double d) {
-  Quartic r = q;
-  for (int i = 0; i < 4; ++i) {
-    for (int k = 3; k >= i; --k) r.c[k] += d * r.c[k + 1];
-  }
-  return r;
-}
+// The same quartic in w = v - d: q(w + d) (core/bernstein.hpp's Taylor shift).
+inline Quartic shifted(const Quartic& q, double d) { return {shift_power_form(q.c, d)}; }
 
-// Bernstein control points of q over [0, width]: q(width s) = sum b_j C(4,j) s^j (1-s)^(4-j).
-// The polynomial lies in their convex hull; b0 and b4 are the end values.
+// Bernstein control points of q over [0, width] (core/bernstein.hpp): q(width s) =
+// sum b_j C(4,j) s^j (1-s)^(4-j). The polynomial lies in their convex hull; b0 and b4 are the
+// end values.
 inline std::array<double, 5> bernstein(const Quartic& q, double width) {
-  const double p1 = q.c[1] * width, p2 = q.c[2] * width * width;
-  const double p3 = q.c[3] * width * width * width, p4 = q.c[4] * (width * width) * (width * width);
-  const double p0 = q.c[0];
-  return {p0, p0 + p1 / 4.0, p0 + p1 / 2.0 + p2 / 6.0, p0 + 3.0 * p1 / 4.0 + p2 / 2.0 + p3 / 4.0,
-          p0 + p1 + p2 + p3 + p4};
+  return bernstein_from_power(q.c, width);
 }
 
 }  // namespace convray::implicit

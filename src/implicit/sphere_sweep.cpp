@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "core/polynomial_roots.hpp"
 #include "implicit/insertion_sort.hpp"
 #include "implicit/quartic.hpp"
-#include "implicit/quartic_roots.hpp"
 #include "implicit/surface_impl.hpp"
 
 namespace convray::implicit {
@@ -36,15 +36,13 @@ constexpr size_t kInsertionSortLimit = 64;
 // Per-thread storage, so that a ray allocates nothing once the vectors have grown.
 struct SweepBuffers {
   std::vector<ActiveSphere> active;  // spheres whose chord holds the cursor
-  std::vector<double> roots;         // of one piece's quartic
 };
 
 class SphereSweep {
  public:
   SphereSweep(const ConvolutionSurface::Impl& s, const SphereSweepRequest& request,
               std::vector<double>& out, TraceStats& stats, SweepBuffers& buffers)
-      : s_(s), request_(request), out_(out), stats_(stats), active_(buffers.active),
-        roots_(buffers.roots) {}
+      : s_(s), request_(request), out_(out), stats_(stats), active_(buffers.active) {}
 
   void run(std::span<accel::SupportInterval> supports, double tmin, double tmax);
 
@@ -62,7 +60,6 @@ class SphereSweep {
   std::vector<double>& out_;
   TraceStats& stats_;
   std::vector<ActiveSphere>& active_;
-  std::vector<double>& roots_;
 
   Quartic sum_;        // the active spheres' field, in u = t - origin_
   Quartic magnitude_;  // sum of |coefficients| added or removed since the rebase
@@ -142,17 +139,18 @@ bool SphereSweep::solve(double lo, double hi) {
   for (const ActiveSphere& a : active_) q += sphere_term(a.k, a.h2, a.tc - lo);
   stats_.field_evaluations += active_.size();
   q.c[0] -= s_.threshold;
-  roots_.clear();
-  QuarticRootOptions options;
   const bool first_only = request_.mode != RootMode::all;
-  options.first_only = first_only;
+  // Below this width (in v) a piece is not halved any more: a pair of roots closer than this
+  // (the quartic barely touching T) is told from a miss by the sign at its middle.
   const double ulps_of_t = 4.0 * std::numeric_limits<double>::epsilon() *
                           std::max(std::abs(lo), std::abs(hi));
-  options.resolution = std::max(ulps_of_t, 1e-9 * s_.min_radius);
-  quartic_roots(q, hi - lo, options, roots_);
+  const double resolution = std::max(ulps_of_t, 1e-9 * s_.min_radius);
+  double roots[4];
+  const int count =
+      polynomial_roots(q.c, 0.0, hi - lo, roots, first_only ? 1 : 4, resolution);
   bool found = false;
-  for (double v : roots_) {
-    const double t = lo + v;
+  for (int i = 0; i < count; ++i) {
+    const double t = lo + roots[i];
     if (!out_.empty() && t <= out_.back() + 1e-9 * s_.min_radius) continue;  // a shared end
     out_.push_back(t);
     ++stats_.roots;

@@ -7,8 +7,9 @@
 // as spheres enter and leave, O(1) per event. On each piece the Bernstein hull of that
 // running sum (widened by a bound on its rounding) rules out a crossing almost everywhere;
 // where it cannot, the quartic is summed afresh around the piece from the active spheres'
-// own terms and its roots isolated and polished on it (quartic_roots.hpp). POV-Ray does the
-// same per interval, solving every piece with a closed form.
+// own terms and its roots isolated and polished on it (the one polynomial root finder,
+// core/polynomial_roots.hpp). POV-Ray does the same per interval, solving every piece with a
+// closed form.
 #include <optional>
 #include <span>
 #include <vector>

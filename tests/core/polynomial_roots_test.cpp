@@ -1,13 +1,16 @@
 // The one polynomial root finder (core/polynomial_roots.hpp) against polynomials built from
 // known roots (tests/reference/polynomial_oracle.hpp, evaluated in long double): distinct
-// roots of every degree up to six, roots beside complex pairs, close pairs, roots on the ends,
-// touching roots, the brackets' sign changes, and the smallest root alone.
+// roots of every degree up to eight, roots beside complex pairs, close pairs, roots on the
+// ends, touching roots, tiny and huge scales, a vanishing leading coefficient, unbounded
+// intervals, the brackets' sign changes, and the smallest root alone; and a brute-force sign
+// scan of random polynomials. (Quartics with both callers' settings: quartic_roots_test.)
 #include "core/polynomial_roots.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -154,6 +157,210 @@ TEST(PolynomialRoots, QuadraticKeepsTheSmallRootsDigits) {
   ASSERT_EQ(quadratic_roots(2.0, -2.5, 2.0, t), 2);  // 2x^2 - 5x + 2 = (2x - 1)(x - 2)
   EXPECT_EQ(t[0], 0.5);
   EXPECT_EQ(t[1], 2.0);
+}
+
+// c * prod (x - r), any degree up to eight, constant first.
+std::vector<double> from_roots(const std::vector<double>& r, double c) {
+  std::vector<double> p = {c};
+  for (double root : r) {
+    p.push_back(0.0);
+    for (size_t k = p.size() - 1; k >= 1; --k) p[k] = p[k - 1] - root * p[k];
+    p[0] = -root * p[0];
+  }
+  return p;
+}
+
+// The exact slope at a known root r_k of c prod (x - r_j): c prod_{j != k} (r_k - r_j).
+double slope_at(const std::vector<double>& r, size_t k, double c) {
+  long double slope = c;
+  for (size_t j = 0; j < r.size(); ++j) {
+    if (j != k) slope *= (long double)r[k] - r[j];
+  }
+  return double(slope);
+}
+
+double size_at(const std::vector<double>& c, double x) {
+  double size = 0.0, power = 1.0;
+  for (double ci : c) {
+    size += std::abs(ci) * power;
+    power *= std::abs(x);
+  }
+  return size;
+}
+
+std::vector<double> roots_of(const std::vector<double>& c, double lo, double hi,
+                             int max_roots = kMaxPolynomialDegree, double resolution = 0.0) {
+  double out[kMaxPolynomialDegree];
+  const int count = polynomial_roots(c, lo, hi, out, max_roots, resolution);
+  return {out, out + count};
+}
+
+TEST(PolynomialRoots, FindsKnownDistinctRootsOfDegreesSevenAndEight) {
+  std::mt19937_64 rng(2025);
+  std::uniform_real_distribution<double> where(-1.5, 2.5), scale(0.2, 5.0);
+  int checked = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const size_t degree = 7 + size_t(trial % 2);
+    std::vector<double> r;
+    for (size_t k = 0; k < degree; ++k) r.push_back(where(rng));
+    std::sort(r.begin(), r.end());
+    bool separated = true;
+    for (size_t k = 1; k < degree; ++k) separated = separated && r[k] - r[k - 1] > 1e-2;
+    if (!separated) continue;
+    const double a = trial % 4 < 2 ? scale(rng) : -scale(rng);
+    const std::vector<double> c = from_roots(r, a);
+    std::vector<double> found = roots_of(c, 0.0, 1.0);
+    std::vector<size_t> expected;
+    for (size_t k = 0; k < degree; ++k) {
+      if (r[k] >= 0.0 && r[k] <= 1.0) expected.push_back(k);
+    }
+    ASSERT_EQ(found.size(), expected.size()) << trial;
+    for (size_t i = 0; i < found.size(); ++i) {
+      const size_t k = expected[i];
+      const double tolerance = 1e-14 * size_at(c, r[k]) / std::abs(slope_at(r, k, a)) + 1e-15;
+      EXPECT_NEAR(found[i], r[k], tolerance) << trial;
+    }
+    const std::vector<double> first = roots_of(c, 0.0, 1.0, 1);
+    ASSERT_EQ(first.size(), std::min<size_t>(1, expected.size()));
+    if (!first.empty()) EXPECT_EQ(first[0], found[0]);
+    ++checked;
+  }
+  EXPECT_GT(checked, 300);
+}
+
+// Random polynomials of every degree, sampled densely in long double: each clear sign change
+// between samples holds a root found, and each root found is a zero to rounding.
+TEST(PolynomialRoots, AgreesWithABruteForceSignScan) {
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const size_t degree = 1 + size_t(trial % 8);
+    std::vector<double> c(degree + 1);
+    for (double& ci : c) ci = u(rng);
+    const double lo = 2.0 * u(rng), hi = lo + 0.1 + 2.0 * std::abs(u(rng));
+    const std::vector<double> found = roots_of(c, lo, hi);
+    ASSERT_LE(found.size(), degree);
+    for (size_t i = 0; i < found.size(); ++i) {
+      EXPECT_GE(found[i], lo);
+      EXPECT_LE(found[i], hi);
+      if (i > 0) EXPECT_GT(found[i], found[i - 1]) << trial;
+      EXPECT_LE(std::abs(evaluate_polynomial(c, found[i])), 1e-13 * size_at(c, found[i]))
+          << trial;
+    }
+    auto value = [&](long double x) {
+      long double v = 0.0L;
+      for (size_t k = c.size(); k-- > 0;) v = v * x + c[k];
+      return v;
+    };
+    const int samples = 4000;
+    long double x0 = lo, v0 = value(x0);
+    for (int s = 1; s <= samples; ++s) {
+      const long double x1 = lo + (hi - lo) * (long double)s / samples, v1 = value(x1);
+      const double clear = 1e-12 * size_at(c, double(x1));
+      if (std::abs(v0) > clear && std::abs(v1) > clear && (v0 < 0) != (v1 < 0)) {
+        const bool held = std::any_of(found.begin(), found.end(), [&](double x) {
+          return x >= double(x0) - 1e-12 && x <= double(x1) + 1e-12;
+        });
+        EXPECT_TRUE(held) << "trial " << trial << " sign change in [" << double(x0) << ", "
+                          << double(x1) << "]";
+      }
+      x0 = x1;
+      v0 = v1;
+    }
+  }
+}
+
+TEST(PolynomialRoots, TinyAndHugeScales) {
+  for (double s : {1e-30, 1e-9, 1.0, 1e9, 1e30}) {
+    const std::vector<double> c = from_roots({0.2 * s, 0.5 * s, 0.9 * s}, 1.0);
+    const std::vector<double> found = roots_of(c, 0.0, s);
+    ASSERT_EQ(found.size(), 3u) << s;
+    EXPECT_NEAR(found[0], 0.2 * s, 1e-14 * s);
+    EXPECT_NEAR(found[1], 0.5 * s, 1e-14 * s);
+    EXPECT_NEAR(found[2], 0.9 * s, 1e-14 * s);
+    // The same roots on an interval far wider than them.
+    const std::vector<double> wide = roots_of(c, -1e6 * s, 1e6 * s);
+    ASSERT_EQ(wide.size(), 3u) << s;
+    EXPECT_NEAR(wide[1], 0.5 * s, 1e-14 * s);
+  }
+}
+
+// A ray nearly along an asymptotic direction of a quartic surface: the leading coefficient
+// vanishes against the others, and the interval runs to Cauchy's bound (polynomial_surface).
+TEST(PolynomialRoots, AVanishingLeadingCoefficient) {
+  for (double e : {1e-8, 1e-17, 1e-20, 1e-40, 1e-60, 1e-100}) {
+    const double c[5] = {3.0, -4.0, 1.0, 0.0, e};  // (x - 1)(x - 3) + e x^4
+    const double hi = 1.0 + 4.0 / e;
+    double out[4];
+    ASSERT_EQ(polynomial_roots(c, 0.0, hi, out), 2) << e;
+    // e x^4 moves the roots by about e x^4 / |slope| (at most 81 e / 2).
+    EXPECT_NEAR(out[0], 1.0, 1e-15 + 50.0 * e) << e;
+    EXPECT_NEAR(out[1], 3.0, 4e-15 + 50.0 * e) << e;
+  }
+}
+
+TEST(PolynomialRoots, UnboundedIntervalsAreClippedToTheRootsBound) {
+  const std::vector<double> c = from_roots({1.0, 3.0, 1e6}, -2.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<double> found = roots_of(c, 0.0, inf);
+  ASSERT_EQ(found.size(), 3u);
+  EXPECT_NEAR(found[0], 1.0, 1e-14);
+  EXPECT_NEAR(found[1], 3.0, 1e-14);
+  EXPECT_NEAR(found[2], 1e6, 1e-8);
+  EXPECT_EQ(roots_of(c, -inf, inf).size(), 3u);
+  // Coefficients that are not numbers: no roots, and an answer.
+  const std::vector<double> nan = {1.0, std::nan(""), -1.0, 2.0};
+  EXPECT_TRUE(roots_of(nan, 0.0, 1.0).empty());
+}
+
+TEST(PolynomialRoots, RootsOnTheEndsOfAnyInterval) {
+  // (x + 1.5)(x - 2.5)(x - 1)(x + 3) on [-1.5, 2.5]: both ends, and 1 inside, once each.
+  const std::vector<double> c = from_roots({-1.5, 2.5, 1.0, -3.0}, 0.5);
+  const std::vector<double> found = roots_of(c, -1.5, 2.5);
+  ASSERT_EQ(found.size(), 3u);
+  EXPECT_NEAR(found[0], -1.5, 1e-15);
+  EXPECT_NEAR(found[1], 1.0, 1e-15);
+  EXPECT_NEAR(found[2], 2.5, 1e-15);
+}
+
+// Double roots: a touch (the polynomial only meets zero) is no crossing; with a resolution, a
+// pair closer than it is told from a miss by the sign at the middle of its piece.
+TEST(PolynomialRoots, DoubleAndNearDoubleRootsOfHigherDegree) {
+  const std::vector<double> touch = from_roots({0.3, 0.3, -1.0, 2.0, 1.7, -0.4}, 1.0);
+  for (double x : roots_of(touch, 0.0, 1.0)) EXPECT_NEAR(x, 0.3, 1e-7);
+  // touch = (x - 0.3)^2 g(x), g(0.3) = 1.3 (-1.7) (-1.4) 0.7 > 0.
+  const double g = evaluate_polynomial(from_roots({-1.0, 2.0, 1.7, -0.4}, 1.0), 0.3);
+  std::vector<double> miss = touch, cross = touch;
+  miss[0] += 1e-10 * g;   // away from zero: no root
+  cross[0] -= 1e-10 * g;  // through zero: two roots 1e-5 either side of 0.3
+  for (double resolution : {0.0, 1e-12}) {
+    EXPECT_TRUE(roots_of(miss, 0.0, 1.0, 8, resolution).empty()) << resolution;
+    const std::vector<double> found = roots_of(cross, 0.0, 1.0, 8, resolution);
+    ASSERT_EQ(found.size(), 2u) << resolution;
+    EXPECT_NEAR(found[0], 0.3 - 1e-5, 1e-9);
+    EXPECT_NEAR(found[1], 0.3 + 1e-5, 1e-9);
+  }
+  // A pair far closer than the resolution: its piece is not halved, and the sign at its
+  // middle decides; either way no root away from the pair, and never one alone.
+  const std::vector<double> pair = from_roots({0.3 - 1e-10, 0.3 + 1e-10, -1.0, 2.0}, 1.0);
+  const std::vector<double> coarse = roots_of(pair, 0.0, 1.0, 4, 1e-6);
+  EXPECT_TRUE(coarse.empty() || coarse.size() == 2u);
+  for (double x : coarse) EXPECT_NEAR(x, 0.3, 1e-6);
+}
+
+TEST(PolynomialRoots, BracketsOfDegreeEight) {
+  const std::vector<double> r = {-0.9, -0.2, 0.05, 0.3, 0.31, 0.8, 1.2, 2.0};
+  const std::vector<double> c = from_roots(r, 0.7);
+  RootBracket brackets[kMaxPolynomialDegree];
+  const int count = polynomial_brackets(c, -0.5, 1.5, brackets);
+  ASSERT_EQ(count, 6);
+  for (int k = 0; k < count; ++k) {
+    const RootBracket& b = brackets[k];
+    EXPECT_LT(b.lo, r[size_t(k) + 1]);
+    EXPECT_GT(b.hi, r[size_t(k) + 1]);
+    EXPECT_NE(b.f_lo < 0.0, b.f_hi < 0.0);
+    EXPECT_NEAR(refine_polynomial_root(c, b), r[size_t(k) + 1], 1e-14);
+  }
 }
 
 }  // namespace
