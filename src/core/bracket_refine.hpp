@@ -1,6 +1,7 @@
 #pragma once
-// The bracketed root refiners every layer shares (implicit's tracers, geometry's shapes): the
-// safeguarded secant refiner and plain bisection to adjacent doubles.
+// The bracketed root refiners every layer shares (implicit's tracers, geometry's shapes,
+// polygonize's edge crossings): the safeguarded secant refiner and plain bisection to adjacent
+// doubles.
 //
 // refine_bracket: the safeguarded bracketed refiner of the ray tracers. On a sign-changing bracket
 // it steps by secants through the last two points evaluated (superlinear near a simple root),
@@ -19,6 +20,13 @@
 // closed around the root. The tracers ask for a fraction of the kernel's radius far below what
 // a picture or their tests can see (the last secant steps to a few ulps cost one or two exact
 // evaluations of every primitive near the ray per root).
+//
+// `residual` (absolute, in g) stops at the first point evaluated where |g(t)| <= residual and
+// returns that t (the ends given are not tested: the caller has their values). The polygonizer
+// asks for it: its contract is a vertex with |F - T| <= tolerance * T, not a narrow bracket,
+// and the steps after that point would only move every vertex within the tolerance. The
+// points evaluated are the same as without it up to the stop, so it never costs evaluations;
+// 0 (the default) stops only on an exact zero, as the tracers want.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,7 +37,7 @@ template <class Function>
 double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&& g,
                       double guess = std::numeric_limits<double>::quiet_NaN(),
                       double guess_slope = std::numeric_limits<double>::quiet_NaN(),
-                      double tolerance = 0.0) {
+                      double tolerance = 0.0, double residual = 0.0) {
   const bool lo_negative = g_lo < 0.0;
   double t = guess > lo && guess < hi ? guess : (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
   double last_t = 0.0, last_g = 0.0;  // the previous point evaluated, for the secant
@@ -43,7 +51,7 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
     if (hi - lo <= resolution) break;
     if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     const double value = g(t);
-    if (value == 0.0) return t;
+    if (std::abs(value) <= residual) return t;  // with residual 0: value == 0
     const bool root_above = (value < 0.0) == lo_negative;
     if (root_above) {
       lo = t;

@@ -45,16 +45,21 @@ struct Outcome {
   double root;
   int evaluations;
   bool stayed_inside;
+  double last_evaluated;
 };
 
-Outcome refine(const Case& c, double guess = std::nan(""), double slope = std::nan("")) {
-  Outcome out{0.0, 0, true};
+Outcome refine(const Case& c, double guess = std::nan(""), double slope = std::nan(""),
+               double residual = 0.0) {
+  Outcome out{0.0, 0, true, std::nan("")};
   const auto g = [&](double x) {
     ++out.evaluations;
     out.stayed_inside = out.stayed_inside && x >= c.lo && x <= c.hi;
+    out.last_evaluated = x;
     return c.g(x);
   };
-  out.root = refine_bracket(c.lo, c.hi, c.g(c.lo), c.g(c.hi), g, guess, slope);
+  out.root = residual == 0.0
+                 ? refine_bracket(c.lo, c.hi, c.g(c.lo), c.g(c.hi), g, guess, slope)
+                 : refine_bracket(c.lo, c.hi, c.g(c.lo), c.g(c.hi), g, guess, slope, 0.0, residual);
   return out;
 }
 
@@ -106,6 +111,53 @@ TEST(BracketRefine, AGoodGuessWithItsSlopeConvergesInAFewEvaluations) {
       EXPECT_NEAR(backwards.root, c.root, tolerance(c)) << c.name;
       EXPECT_TRUE(backwards.stayed_inside) << c.name;
     }
+  }
+}
+
+// A residual stop (the polygonizer's |F - T| <= tolerance * T) ends at the first point where
+// |g| is within it: that point itself, inside the bracket, after no more evaluations than the
+// refiner takes to a few ulps, and (for a simple root) within residual / |g'| of the exact
+// root.
+TEST(BracketRefine, AResidualStopsAtTheFirstPointWithinIt) {
+  for (const Case& c : cases()) {
+    if (c.name == "jump") continue;  // never within a residual below 1: the next test
+    const Outcome to_ulps = refine(c);
+    for (double residual : {1e-3, 1e-8, 1e-12}) {
+      const Outcome o = refine(c, std::nan(""), std::nan(""), residual);
+      const std::string what = c.name + " residual " + std::to_string(residual);
+      EXPECT_LE(std::abs(c.g(o.root)), residual) << what;
+      EXPECT_EQ(o.root, o.last_evaluated) << what;  // the point that met it, not an end
+      EXPECT_TRUE(o.stayed_inside) << what;
+      EXPECT_GT(o.root, c.lo) << what;
+      EXPECT_LT(o.root, c.hi) << what;
+      EXPECT_LE(o.evaluations, to_ulps.evaluations) << what;
+      if (c.name == "triple root" || c.name == "flat then steep") continue;
+      const double h = 1e-7, slope = (c.g(c.root + h) - c.g(c.root - h)) / (2.0 * h);
+      EXPECT_NEAR(o.root, c.root, 2.0 * residual / std::abs(slope) + tolerance(c)) << what;
+    }
+  }
+}
+
+// A residual the function never comes within (the jump's |g| = 1) changes nothing.
+TEST(BracketRefine, AResidualNeverReachedChangesNothing) {
+  for (const Case& c : cases()) {
+    if (c.name != "jump") continue;
+    const Outcome to_ulps = refine(c), o = refine(c, std::nan(""), std::nan(""), 0.5);
+    EXPECT_EQ(o.root, to_ulps.root);
+    EXPECT_EQ(o.evaluations, to_ulps.evaluations);
+  }
+}
+
+// Residual 0, given explicitly, is the default: the same points, the same answer, bit for bit.
+TEST(BracketRefine, AResidualOfZeroIsTheDefault) {
+  for (const Case& c : cases()) {
+    const Outcome by_default = refine(c);
+    int evaluations = 0;
+    const double zero = refine_bracket(
+        c.lo, c.hi, c.g(c.lo), c.g(c.hi), [&](double x) { return ++evaluations, c.g(x); },
+        std::nan(""), std::nan(""), 0.0, 0.0);
+    EXPECT_EQ(zero, by_default.root) << c.name;
+    EXPECT_EQ(evaluations, by_default.evaluations) << c.name;
   }
 }
 
