@@ -33,7 +33,7 @@ mkdir -p $out/scenes
 for scene in scenes/*.pov; do
   $convray "$scene" +W400 +H300 +A0.3 --quiet -o "$out/scenes/$(basename "$scene" .pov).png"
 done
-# POV-Ray's blob samples next to POV-Ray's own pictures (docs/povray-comparison.md).
+# POV-Ray's blob samples next to POV-Ray's own pictures (docs/benchmarks.md, issue 4).
 if command -v povray >/dev/null && [ -d /usr/share/povray-3.7/scenes/objects ]; then
   bash scripts/compare-povray.sh --size 400x300 --out out/compare-docs >/dev/null
   mkdir -p $out/povray
