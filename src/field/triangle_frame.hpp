@@ -2,8 +2,8 @@
 // What every per-ray user of a triangle (the SIMD field batch, the window march's curvature
 // bounds) needs beyond its corners: its unit normal, the unit directions and lengths of its
 // edges, and its area. Computed once per mesh (ConvolutionSurface keeps one per triangle,
-// 128 bytes) instead of once per ray and triangle: the square roots and divisions were about
-// a tenth of a render of a mesh (docs/benchmarks.md, issue 15's fifth step).
+// 128 bytes) instead of once per ray and triangle (their square roots and divisions:
+// docs/benchmarks.md, issue 15's fifth step).
 #include <array>
 
 #include "field/triangle.hpp"
