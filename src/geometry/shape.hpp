@@ -20,6 +20,8 @@ struct SurfaceInfo {
   scene::TexturePtr texture;        // never null after building
   scene::Interior interior;
   bool no_shadow = false;
+  bool no_image = false;       // hidden from camera rays and their transmitted rays
+  bool no_reflection = false;  // hidden from reflected rays (and what they pass through)
 };
 
 struct Crossing {

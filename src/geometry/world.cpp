@@ -1,6 +1,7 @@
 #include "geometry/world.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/box.hpp"
 #include "core/bvh.hpp"
@@ -19,6 +20,24 @@ void drop_shadowless(std::vector<Crossing>& crossings, size_t first) {
       std::remove_if(crossings.begin() + std::ptrdiff_t(first), crossings.end(),
                      [](const Crossing& c) { return c.surface && c.surface->no_shadow; });
   crossings.erase(removed, crossings.end());
+}
+
+bool hidden_from(World::Viewer viewer, const SurfaceInfo* surface) {
+  if (!surface || viewer == World::Viewer::any) return false;
+  return viewer == World::Viewer::camera ? surface->no_image : surface->no_reflection;
+}
+
+// The first crossing of `shape` in (tmin, tmax) that `viewer` sees: a hidden surface is
+// passed through (the ray goes on from just beyond it, as POV-Ray's does).
+std::optional<Crossing> first_seen_crossing(const Shape& shape, const Ray& ray, double tmin,
+                                            double tmax, TraceStats& stats,
+                                            World::Viewer viewer) {
+  std::optional<Crossing> c = shape.first_crossing(ray, tmin, tmax, stats);
+  while (c && hidden_from(viewer, c->surface)) {
+    const double beyond = c->t + 1e-9 * (1.0 + std::abs(c->t));
+    c = shape.first_crossing(ray, beyond, tmax, stats);
+  }
+  return c;
 }
 
 }  // namespace
@@ -65,14 +84,15 @@ World::World(World&&) noexcept = default;
 Box3 World::bounds() const { return index_->bounds; }
 
 std::optional<Crossing> World::first_hit(const Ray& ray, double tmin, double tmax,
-                                         TraceStats& stats, Objects objects) const {
+                                         TraceStats& stats, Objects objects,
+                                         Viewer viewer) const {
   std::optional<Crossing> nearest;
   double reach = tmax;
   const bool skip_blockers = objects == Objects::letting_light_through;
   if (skip_blockers && blockers_ == shapes_.size()) return std::nullopt;
   auto ask = [&](size_t id, double& limit) {
     if (skip_blockers && blocks_light_[id]) return;
-    if (auto c = shapes_[id]->first_crossing(ray, tmin, limit, stats)) {
+    if (auto c = first_seen_crossing(*shapes_[id], ray, tmin, limit, stats, viewer)) {
       nearest = c;
       limit = c->t;  // only nearer objects matter now
     }

@@ -50,9 +50,15 @@ class World {
   // (Shape::blocks_light) with blocked() and follow the others crossing by crossing.
   enum class Objects { all, letting_light_through };
 
-  // The nearest crossing of any object in (tmin, tmax).
+  // Who looks along a ray: camera rays (and the rays they send on through transparent
+  // surfaces) do not see no_image surfaces, reflected rays (and theirs) no_reflection ones;
+  // shadow rays and the rest see every surface.
+  enum class Viewer { any, camera, reflection };
+
+  // The nearest crossing in (tmin, tmax) of any object, of the surfaces `viewer` sees.
   std::optional<Crossing> first_hit(const Ray& ray, double tmin, double tmax, TraceStats& stats,
-                                    Objects objects = Objects::all) const;
+                                    Objects objects = Objects::all,
+                                    Viewer viewer = Viewer::any) const;
   // Whether an object that blocks light outright crosses the ray in (tmin, tmax): an any-hit
   // query, no root refined.
   bool blocked(const Ray& ray, double tmin, double tmax, TraceStats& stats) const;

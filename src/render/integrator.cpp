@@ -76,7 +76,8 @@ Vec3 Integrator::trace_camera_ray(const Ray& ray, RenderStats& stats) const {
 Vec3 Integrator::trace(const Ray& ray, const RayState& state, double tmin,
                        RenderStats& stats) const {
   ++stats.queries;
-  const std::optional<Crossing> crossing = world_.first_hit(ray, tmin, kInfinity, stats.trace);
+  const std::optional<Crossing> crossing = world_.first_hit(
+      ray, tmin, kInfinity, stats.trace, geometry::World::Objects::all, state.viewer);
   if (!crossing) return apply_fogs(scene_.fogs, ray, kInfinity, sky_color(scene_, ray.direction));
   if (state.level == 1) ++stats.hits;
   const Vec3 color = shade(ray, *crossing, state, stats);
@@ -185,7 +186,7 @@ Vec3 Integrator::reflected_light(const HitPoint& hit, const RayState& state,
   double weight = 0.0;
   if (!may_trace(state, max_channel(reflection), weight)) return Vec3(0.0);
   ++stats.reflected_rays;
-  const RayState child{state.level + 1, weight, state.medium};
+  const RayState child{state.level + 1, weight, state.medium, geometry::World::Viewer::reflection};
   const Ray ray{hit.point, mirrored(hit.view, hit.normal)};
   return reflection * trace(ray, child, settings_.ray_offset, stats);
 }
@@ -201,7 +202,7 @@ Vec3 Integrator::transmitted_light(const HitPoint& hit, const Vec3& factor, cons
           : state.medium.left(hit.surface);
   const double ior_to = beyond.ior();
 
-  RayState child{state.level, weight, beyond};
+  RayState child{state.level, weight, beyond, state.viewer};
   Vec3 direction = hit.view;
   if (ior_from != ior_to) {
     child.level = state.level + 1;  // a bent ray is a new level; a straight one is not
@@ -209,6 +210,7 @@ Vec3 Integrator::transmitted_light(const HitPoint& hit, const Vec3& factor, cons
       // Total internal reflection: the light stays in the medium it came from.
       direction = mirrored(hit.view, hit.normal);
       child.medium = state.medium;
+      child.viewer = geometry::World::Viewer::reflection;
       ++stats.reflected_rays;
       return trace(Ray{hit.point, direction}, child, settings_.ray_offset, stats);
     }

@@ -48,6 +48,9 @@ class Integrator {
     int level = 1;
     double weight = 1.0;
     MediumStack medium;
+    // Camera rays and the rays they transmit skip no_image surfaces; once a ray has been
+    // reflected, it and its descendants skip no_reflection ones.
+    geometry::World::Viewer viewer = geometry::World::Viewer::camera;
   };
   // What shading needs to know about the hit point.
   struct HitPoint;

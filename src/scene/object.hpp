@@ -204,6 +204,8 @@ struct Object {
   std::optional<Interior> interior;
   bool inverse = false;     // inside and outside swapped
   bool no_shadow = false;   // casts no shadow
+  bool no_image = false;       // not seen by camera rays (nor through what they pass)
+  bool no_reflection = false;  // not seen in reflections
   bool hollow = false;
   // union only: POV-Ray's split_union (on by default) puts the members into the scene's
   // hierarchy; off keeps the union one object (with a hierarchy of its own inside).

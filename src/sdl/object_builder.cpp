@@ -155,6 +155,10 @@ bool ObjectBuilder::parse_flag(const std::string& word, const SourceLoc& loc) {
     object_.inverse = !object_.inverse;
   } else if (word == "no_shadow") {
     object_.no_shadow = true;
+  } else if (word == "no_image") {
+    object_.no_image = optional_bool(parser_);
+  } else if (word == "no_reflection") {
+    object_.no_reflection = optional_bool(parser_);
   } else if (word == "hollow") {
     object_.hollow = optional_bool(parser_);
   } else if (word == "split_union") {
