@@ -31,13 +31,14 @@ namespace convray::geometry {
 namespace {
 
 // What a CSG parent hands down: a child without a texture (interior) takes its parent's;
-// no_shadow, no_image and no_reflection on a parent cover its children.
+// no_shadow, no_image, no_reflection and double_illuminate on a parent cover its children.
 struct Inherited {
   scene::TexturePtr texture;
   std::optional<scene::Interior> interior;
   bool no_shadow = false;
   bool no_image = false;
   bool no_reflection = false;
+  bool double_illuminate = false;
 };
 
 bool finite(const Vec3& v) {
@@ -115,6 +116,7 @@ Inherited inherit(const scene::Object& object, const Inherited& parent) {
   own.no_shadow = object.no_shadow || parent.no_shadow;
   own.no_image = object.no_image || parent.no_image;
   own.no_reflection = object.no_reflection || parent.no_reflection;
+  own.double_illuminate = object.double_illuminate || parent.double_illuminate;
   return own;
 }
 
@@ -123,7 +125,8 @@ SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
   const scene::Interior interior = own.interior.value_or(scene::Interior{});
   if (last_surface_ && last_surface_->texture == texture &&
       last_surface_->interior.ior == interior.ior && last_surface_->no_shadow == own.no_shadow &&
-      last_surface_->no_image == own.no_image && last_surface_->no_reflection == own.no_reflection) {
+      last_surface_->no_image == own.no_image && last_surface_->no_reflection == own.no_reflection &&
+      last_surface_->double_illuminate == own.double_illuminate) {
     return last_surface_;
   }
   auto info = std::make_shared<SurfaceInfo>();
@@ -132,6 +135,7 @@ SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
   info->no_shadow = own.no_shadow;
   info->no_image = own.no_image;
   info->no_reflection = own.no_reflection;
+  info->double_illuminate = own.double_illuminate;
   last_surface_ = info;
   return info;
 }

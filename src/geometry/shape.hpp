@@ -22,6 +22,7 @@ struct SurfaceInfo {
   bool no_shadow = false;
   bool no_image = false;       // hidden from camera rays and their transmitted rays
   bool no_reflection = false;  // hidden from reflected rays (and what they pass through)
+  bool double_illuminate = false;  // lights behind the surface light its far side
 };
 
 struct Crossing {

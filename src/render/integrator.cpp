@@ -135,14 +135,21 @@ Vec3 Integrator::direct_light(const HitPoint& hit, double opacity, RenderStats& 
   const scene::Finish& finish = *hit.finish;
   Vec3 diffuse = ambient_term(finish, scene_.settings.ambient_light, hit.pigment.rgb);
   Vec3 highlights(0.0);
+  const bool double_illuminated = hit.surface && hit.surface->double_illuminate;
   for (size_t index = 0; index < scene_.lights.size(); ++index) {
     const std::optional<LightArrival> arrival = light_arrival(scene_.lights[index], hit.point);
-    // A light behind the surface adds nothing: no shadow ray needed.
-    if (!arrival || !(glm::dot(hit.normal, arrival->to_light) > 0.0)) continue;
+    if (!arrival) continue;
+    // A light behind the surface adds nothing (no shadow ray needed), unless the surface is
+    // double_illuminate: then it lights the far side as if that side faced the viewer.
+    Vec3 normal = hit.normal;
+    if (!(glm::dot(normal, arrival->to_light) > 0.0)) {
+      if (!double_illuminated || !(glm::dot(normal, arrival->to_light) < 0.0)) continue;
+      normal = -normal;
+    }
     const Vec3 visible =
         light_visibility(index, hit.point, arrival->to_light, arrival->distance, stats);
     if (visible == Vec3(0.0)) continue;
-    const LightContribution lit = light_contribution(finish, hit.pigment.rgb, hit.normal, hit.view,
+    const LightContribution lit = light_contribution(finish, hit.pigment.rgb, normal, hit.view,
                                                      arrival->to_light, arrival->color * visible);
     diffuse += lit.diffuse;
     // POV-Ray 3.7: a shadowless light (a fill light) makes no phong or specular highlight.

@@ -206,6 +206,7 @@ struct Object {
   bool no_shadow = false;   // casts no shadow
   bool no_image = false;       // not seen by camera rays (nor through what they pass)
   bool no_reflection = false;  // not seen in reflections
+  bool double_illuminate = false;  // lit on both sides: lights behind the surface light it too
   bool hollow = false;
   // union only: POV-Ray's split_union (on by default) puts the members into the scene's
   // hierarchy; off keeps the union one object (with a hierarchy of its own inside).

@@ -159,6 +159,8 @@ bool ObjectBuilder::parse_flag(const std::string& word, const SourceLoc& loc) {
     object_.no_image = optional_bool(parser_);
   } else if (word == "no_reflection") {
     object_.no_reflection = optional_bool(parser_);
+  } else if (word == "double_illuminate") {
+    object_.double_illuminate = optional_bool(parser_);
   } else if (word == "hollow") {
     object_.hollow = optional_bool(parser_);
   } else if (word == "split_union") {
