@@ -124,7 +124,7 @@ SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
   const scene::TexturePtr& texture = own.texture ? own.texture : default_texture_;
   const scene::Interior interior = own.interior.value_or(scene::Interior{});
   if (last_surface_ && last_surface_->texture == texture &&
-      last_surface_->interior.ior == interior.ior && last_surface_->no_shadow == own.no_shadow &&
+      last_surface_->interior == interior && last_surface_->no_shadow == own.no_shadow &&
       last_surface_->no_image == own.no_image && last_surface_->no_reflection == own.no_reflection &&
       last_surface_->double_illuminate == own.double_illuminate) {
     return last_surface_;

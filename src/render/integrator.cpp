@@ -8,6 +8,7 @@
 #include "render/area_light.hpp"
 #include "render/atmosphere.hpp"
 #include "render/finish.hpp"
+#include "render/interior_fade.hpp"
 #include "render/lights.hpp"
 #include "render/normal_perturbation.hpp"
 #include "render/pigment.hpp"
@@ -80,7 +81,13 @@ Vec3 Integrator::trace(const Ray& ray, const RayState& state, double tmin,
       ray, tmin, kInfinity, stats.trace, geometry::World::Objects::all, state.viewer);
   if (!crossing) return apply_fogs(scene_.fogs, ray, kInfinity, sky_color(scene_, ray.direction));
   if (state.level == 1) ++stats.hits;
-  const Vec3 color = shade(ray, *crossing, state, stats);
+  // A ray leaving a solid whose interior fades brings back light dimmed by the distance it
+  // went inside (from where it started: the surface where it entered).
+  const SurfaceInfo* left = crossing->surface;
+  const Vec3 fade = left && fades(left->interior) && glm::dot(ray.direction, crossing->normal) > 0.0
+                        ? interior_fade(left->interior, crossing->t)
+                        : Vec3(1.0);
+  const Vec3 color = fade * shade(ray, *crossing, state, stats);
   return apply_fogs(scene_.fogs, ray, crossing->t, color);
 }
 
