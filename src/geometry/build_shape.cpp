@@ -34,6 +34,7 @@ namespace {
 // no_shadow, no_image, no_reflection and double_illuminate on a parent cover its children.
 struct Inherited {
   scene::TexturePtr texture;
+  scene::TexturePtr interior_texture;
   std::optional<scene::Interior> interior;
   bool no_shadow = false;
   bool no_image = false;
@@ -112,6 +113,7 @@ class ShapeBuilder {
 Inherited inherit(const scene::Object& object, const Inherited& parent) {
   Inherited own;
   own.texture = object.texture ? object.texture : parent.texture;
+  own.interior_texture = object.interior_texture ? object.interior_texture : parent.interior_texture;
   own.interior = object.interior ? object.interior : parent.interior;
   own.no_shadow = object.no_shadow || parent.no_shadow;
   own.no_image = object.no_image || parent.no_image;
@@ -124,6 +126,7 @@ SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
   const scene::TexturePtr& texture = own.texture ? own.texture : default_texture_;
   const scene::Interior interior = own.interior.value_or(scene::Interior{});
   if (last_surface_ && last_surface_->texture == texture &&
+      last_surface_->interior_texture == own.interior_texture &&
       last_surface_->interior == interior && last_surface_->no_shadow == own.no_shadow &&
       last_surface_->no_image == own.no_image && last_surface_->no_reflection == own.no_reflection &&
       last_surface_->double_illuminate == own.double_illuminate) {
@@ -131,6 +134,7 @@ SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
   }
   auto info = std::make_shared<SurfaceInfo>();
   info->texture = texture;
+  info->interior_texture = own.interior_texture;
   info->interior = interior;
   info->no_shadow = own.no_shadow;
   info->no_image = own.no_image;

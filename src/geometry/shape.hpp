@@ -18,6 +18,7 @@ namespace convray::geometry {
 // shape tree, shared by every crossing of that surface.
 struct SurfaceInfo {
   scene::TexturePtr texture;        // never null after building
+  scene::TexturePtr interior_texture;  // seen from inside the solid; null: `texture`
   scene::Interior interior;
   bool no_shadow = false;
   bool no_image = false;       // hidden from camera rays and their transmitted rays

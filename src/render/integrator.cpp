@@ -95,12 +95,16 @@ Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState&
                        RenderStats& stats) const {
   HitPoint hit;
   hit.point = ray.at(crossing.t);
-  const scene::Texture& texture = crossing.surface && crossing.surface->texture
-                                      ? *crossing.surface->texture
-                                      : fallback_texture();
   hit.view = ray.direction;
   hit.surface = crossing.surface;
   hit.entering = glm::dot(ray.direction, crossing.normal) < 0.0;
+  // Seen from within the solid, a surface wears its interior_texture when it has one.
+  const SurfaceInfo* surface = crossing.surface;
+  const scene::TexturePtr& worn =
+      surface && !hit.entering && surface->interior_texture ? surface->interior_texture
+      : surface                                              ? surface->texture
+                                                             : nullptr;
+  const scene::Texture& texture = worn ? *worn : fallback_texture();
   return shade_texture(texture, crossing.normal, hit, state, stats);
 }
 
@@ -119,10 +123,10 @@ Vec3 Integrator::shade_layer(const scene::Texture& texture, const Vec3& outward,
                              const RayState& state, RenderStats& stats) const {
   hit.finish = &texture.finish;
   hit.pigment = evaluate_pigment(texture.pigment, hit.point);
-  // Bumps tilt the outward normal; then both turn to face the viewer (the inside of a solid
-  // seen from within is lit like an outside).
-  const Vec3 shading = perturb_normal(texture.normal, hit.point, outward);
-  hit.normal = hit.entering ? shading : -shading;
+  // The normal turns to face the viewer (the inside of a solid seen from within is lit like an
+  // outside), then bumps tilt it: POV-Ray 3.7 bumps the side that is seen, so the inside of a
+  // bumped surface is not the outside's bumps turned over (measured: interior_texture.pov).
+  hit.normal = perturb_normal(texture.normal, hit.point, hit.entering ? outward : -outward);
 
   const scene::Color pigment = hit.pigment;
   Vec3 color = direct_light(hit, 1.0 - pigment.filter - pigment.transmit, stats);

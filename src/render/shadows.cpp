@@ -77,7 +77,12 @@ class FadeTracker {
 
 }  // namespace
 
-Vec3 surface_transmittance(const geometry::SurfaceInfo& surface, const Vec3& point) {
+Vec3 surface_transmittance(const geometry::SurfaceInfo& surface, const Vec3& point,
+                           bool entering) {
+  // Leaving the solid, light passes the inside of the surface: its interior_texture.
+  if (!entering && surface.interior_texture) {
+    return texture_transmittance(*surface.interior_texture, point);
+  }
   if (!surface.texture) return Vec3(0.0);
   return texture_transmittance(*surface.texture, point);
 }
@@ -99,8 +104,9 @@ Vec3 shadow_transmittance(const geometry::World& world, const Ray& ray, double t
     const geometry::SurfaceInfo* surface = crossing->surface;
     if (surface && surface->no_shadow) continue;
     if (!surface) return Vec3(0.0);
-    passed *= surface_transmittance(*surface, ray.at(crossing->t)) *
-              fade.cross(*surface, glm::dot(ray.direction, crossing->normal) < 0.0, crossing->t);
+    const bool entering = glm::dot(ray.direction, crossing->normal) < 0.0;
+    passed *= surface_transmittance(*surface, ray.at(crossing->t), entering) *
+              fade.cross(*surface, entering, crossing->t);
     if (std::max({passed.r, passed.g, passed.b}) <= 0.0) return Vec3(0.0);
   }
   return tmin < tmax ? Vec3(0.0) : passed;

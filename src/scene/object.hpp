@@ -201,6 +201,9 @@ struct Object {
   std::optional<UnsupportedObject> unsupported;
   Transform transform;      // own space -> world (or parent CSG space)
   TexturePtr texture;       // null: inherited from the CSG parent, else the default texture
+  // interior_texture: what the inside of the surface wears (null: the parent's, else the
+  // texture); rays that meet the surface from within the solid see it.
+  TexturePtr interior_texture;
   std::optional<Interior> interior;
   bool inverse = false;     // inside and outside swapped
   bool no_shadow = false;   // casts no shadow
