@@ -194,7 +194,8 @@ Vec3 Integrator::light_visibility(size_t index, const Vec3& point, const Vec3& t
 
 bool Integrator::may_trace(const RayState& state, double factor, double& child_weight) const {
   if (state.level >= scene_.settings.max_trace_level) return false;
-  child_weight = state.weight * factor;
+  // A negative factor (`transmit -1`: POV-Ray subtracts what is behind) weighs by its size.
+  child_weight = state.weight * std::abs(factor);
   return child_weight >= scene_.settings.adc_bailout && child_weight > 0.0;
 }
 
