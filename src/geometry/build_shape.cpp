@@ -40,6 +40,7 @@ struct Inherited {
   bool no_image = false;
   bool no_reflection = false;
   bool double_illuminate = false;
+  bool hollow = false;
 };
 
 bool finite(const Vec3& v) {
@@ -119,6 +120,7 @@ Inherited inherit(const scene::Object& object, const Inherited& parent) {
   own.no_image = object.no_image || parent.no_image;
   own.no_reflection = object.no_reflection || parent.no_reflection;
   own.double_illuminate = object.double_illuminate || parent.double_illuminate;
+  own.hollow = object.hollow || parent.hollow;
   return own;
 }
 
@@ -129,7 +131,8 @@ SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
       last_surface_->interior_texture == own.interior_texture &&
       last_surface_->interior == interior && last_surface_->no_shadow == own.no_shadow &&
       last_surface_->no_image == own.no_image && last_surface_->no_reflection == own.no_reflection &&
-      last_surface_->double_illuminate == own.double_illuminate) {
+      last_surface_->double_illuminate == own.double_illuminate &&
+      last_surface_->hollow == own.hollow) {
     return last_surface_;
   }
   auto info = std::make_shared<SurfaceInfo>();
@@ -140,6 +143,7 @@ SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
   info->no_image = own.no_image;
   info->no_reflection = own.no_reflection;
   info->double_illuminate = own.double_illuminate;
+  info->hollow = own.hollow;
   last_surface_ = info;
   return info;
 }

@@ -24,6 +24,7 @@ struct SurfaceInfo {
   bool no_image = false;       // hidden from camera rays and their transmitted rays
   bool no_reflection = false;  // hidden from reflected rays (and what they pass through)
   bool double_illuminate = false;  // lights behind the surface light its far side
+  bool hollow = false;             // fog is drawn inside the solid
 };
 
 struct Crossing {

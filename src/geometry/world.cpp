@@ -55,7 +55,11 @@ World::World(const scene::Scene& scene, implicit::SupportCache* cache, implicit:
   std::vector<Box3> boxes;
   std::vector<ShapePtr> built;
   for (const scene::ObjectPtr& object : scene.objects) {
-    if (object) build_split_shapes(*object, built, cache, tracer);
+    if (!object) continue;
+    const size_t before = built.size();
+    build_split_shapes(*object, built, cache, tracer);
+    hollow_.resize(built.size(), object->hollow ? 1 : 0);
+    if (!object->hollow) solids_ += built.size() - before;
   }
   for (ShapePtr& shape : built) {
     const Box3 box = shape->bounds();
@@ -160,6 +164,15 @@ void World::shadow_crossings_brute_force(const Ray& ray, double tmin, double tma
   for (const ShapePtr& shape : shapes_) shape->crossings(ray, tmin, tmax, out, stats);
   drop_shadowless(out, first);
   sort_by_distance(out, first);
+}
+
+bool World::inside_solid(const Vec3& p) const {
+  if (solids_ == 0) return false;
+  for (size_t id = 0; id < shapes_.size(); ++id) {
+    if (hollow_[id]) continue;
+    if (contains(index_->inside_boxes[id], p) && shapes_[id]->inside(p)) return true;
+  }
+  return false;
 }
 
 bool World::inside_any(const Vec3& p) const {

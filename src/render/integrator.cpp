@@ -71,7 +71,14 @@ Vec3 Integrator::trace_camera_ray(const Ray& ray, RenderStats& stats) const {
   ++stats.camera_rays;
   // A camera with no ray there (outside a fisheye's circle): black, as in POV-Ray.
   if (ray.direction == Vec3(0.0)) return Vec3(0.0);
-  return trace(ray, RayState{}, 0.0, stats);
+  RayState state;
+  // POV-Ray 3.7 draws no fog along rays inside a solid that is not hollow (a camera under a
+  // plain `plane { y, 100 }` sees no fog; measured with povray): where the camera is, then
+  // the solids the rays enter.
+  state.camera_in_solid = !scene_.fogs.empty() && world_.has_solids() &&
+                          world_.inside_solid(ray.origin);
+  state.in_solid = state.camera_in_solid;
+  return trace(ray, state, 0.0, stats);
 }
 
 Vec3 Integrator::trace(const Ray& ray, const RayState& state, double tmin,
@@ -79,7 +86,7 @@ Vec3 Integrator::trace(const Ray& ray, const RayState& state, double tmin,
   ++stats.queries;
   const std::optional<Crossing> crossing = world_.first_hit(
       ray, tmin, kInfinity, stats.trace, geometry::World::Objects::all, state.viewer);
-  if (!crossing) return apply_fogs(scene_.fogs, ray, kInfinity, sky_color(scene_, ray.direction));
+  if (!crossing) return fogged(ray, state, kInfinity, sky_color(scene_, ray.direction));
   if (state.level == 1) ++stats.hits;
   // A ray leaving a solid whose interior fades brings back light dimmed by the distance it
   // went inside (from where it started: the surface where it entered).
@@ -88,8 +95,15 @@ Vec3 Integrator::trace(const Ray& ray, const RayState& state, double tmin,
                         ? interior_fade(left->interior, crossing->t)
                         : Vec3(1.0);
   const Vec3 color = fade * shade(ray, *crossing, state, stats);
-  return apply_fogs(scene_.fogs, ray, crossing->t, color);
+  return fogged(ray, state, crossing->t, color);
 }
+
+Vec3 Integrator::fogged(const Ray& ray, const RayState& state, double depth,
+                        const Vec3& color) const {
+  if (scene_.fogs.empty() || state.in_solid) return color;
+  return apply_fogs(scene_.fogs, ray, depth, color);
+}
+
 
 Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState& state,
                        RenderStats& stats) const {
@@ -205,7 +219,10 @@ Vec3 Integrator::reflected_light(const HitPoint& hit, const RayState& state,
   double weight = 0.0;
   if (!may_trace(state, max_channel(reflection), weight)) return Vec3(0.0);
   ++stats.reflected_rays;
-  const RayState child{state.level + 1, weight, state.medium, geometry::World::Viewer::reflection};
+  RayState child = state;  // reflected: in the same medium
+  child.level = state.level + 1;
+  child.weight = weight;
+  child.viewer = geometry::World::Viewer::reflection;
   const Ray ray{hit.point, mirrored(hit.view, hit.normal)};
   return reflection * trace(ray, child, settings_.ray_offset, stats);
 }
@@ -222,6 +239,9 @@ Vec3 Integrator::transmitted_light(const HitPoint& hit, const Vec3& factor, cons
   const double ior_to = beyond.ior();
 
   RayState child{state.level, weight, beyond, state.viewer};
+  const SurfaceInfo* inside = beyond.innermost();
+  child.camera_in_solid = state.camera_in_solid;
+  child.in_solid = inside ? !inside->hollow : state.camera_in_solid;
   Vec3 direction = hit.view;
   if (ior_from != ior_to) {
     child.level = state.level + 1;  // a bent ray is a new level; a straight one is not
@@ -229,6 +249,7 @@ Vec3 Integrator::transmitted_light(const HitPoint& hit, const Vec3& factor, cons
       // Total internal reflection: the light stays in the medium it came from.
       direction = mirrored(hit.view, hit.normal);
       child.medium = state.medium;
+      child.in_solid = state.in_solid;
       child.viewer = geometry::World::Viewer::reflection;
       ++stats.reflected_rays;
       return trace(Ray{hit.point, direction}, child, settings_.ray_offset, stats);
