@@ -31,11 +31,16 @@ namespace convray::geometry {
 namespace {
 
 // What a CSG parent hands down: a child without a texture (interior) takes its parent's;
-// no_shadow on a parent covers its children.
+// no_shadow, no_image, no_reflection and double_illuminate on a parent cover its children.
 struct Inherited {
   scene::TexturePtr texture;
+  scene::TexturePtr interior_texture;
   std::optional<scene::Interior> interior;
   bool no_shadow = false;
+  bool no_image = false;
+  bool no_reflection = false;
+  bool double_illuminate = false;
+  bool hollow = false;
 };
 
 bool finite(const Vec3& v) {
@@ -109,8 +114,13 @@ class ShapeBuilder {
 Inherited inherit(const scene::Object& object, const Inherited& parent) {
   Inherited own;
   own.texture = object.texture ? object.texture : parent.texture;
+  own.interior_texture = object.interior_texture ? object.interior_texture : parent.interior_texture;
   own.interior = object.interior ? object.interior : parent.interior;
   own.no_shadow = object.no_shadow || parent.no_shadow;
+  own.no_image = object.no_image || parent.no_image;
+  own.no_reflection = object.no_reflection || parent.no_reflection;
+  own.double_illuminate = object.double_illuminate || parent.double_illuminate;
+  own.hollow = object.hollow || parent.hollow;
   return own;
 }
 
@@ -118,13 +128,22 @@ SurfaceInfoPtr ShapeBuilder::surface_for(const Inherited& own) const {
   const scene::TexturePtr& texture = own.texture ? own.texture : default_texture_;
   const scene::Interior interior = own.interior.value_or(scene::Interior{});
   if (last_surface_ && last_surface_->texture == texture &&
-      last_surface_->interior.ior == interior.ior && last_surface_->no_shadow == own.no_shadow) {
+      last_surface_->interior_texture == own.interior_texture &&
+      last_surface_->interior == interior && last_surface_->no_shadow == own.no_shadow &&
+      last_surface_->no_image == own.no_image && last_surface_->no_reflection == own.no_reflection &&
+      last_surface_->double_illuminate == own.double_illuminate &&
+      last_surface_->hollow == own.hollow) {
     return last_surface_;
   }
   auto info = std::make_shared<SurfaceInfo>();
   info->texture = texture;
+  info->interior_texture = own.interior_texture;
   info->interior = interior;
   info->no_shadow = own.no_shadow;
+  info->no_image = own.no_image;
+  info->no_reflection = own.no_reflection;
+  info->double_illuminate = own.double_illuminate;
+  info->hollow = own.hollow;
   last_surface_ = info;
   return info;
 }

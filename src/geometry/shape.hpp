@@ -18,8 +18,13 @@ namespace convray::geometry {
 // shape tree, shared by every crossing of that surface.
 struct SurfaceInfo {
   scene::TexturePtr texture;        // never null after building
+  scene::TexturePtr interior_texture;  // seen from inside the solid; null: `texture`
   scene::Interior interior;
   bool no_shadow = false;
+  bool no_image = false;       // hidden from camera rays and their transmitted rays
+  bool no_reflection = false;  // hidden from reflected rays (and what they pass through)
+  bool double_illuminate = false;  // lights behind the surface light its far side
+  bool hollow = false;             // fog is drawn inside the solid
 };
 
 struct Crossing {

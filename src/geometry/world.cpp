@@ -1,6 +1,7 @@
 #include "geometry/world.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/box.hpp"
 #include "core/bvh.hpp"
@@ -21,6 +22,24 @@ void drop_shadowless(std::vector<Crossing>& crossings, size_t first) {
   crossings.erase(removed, crossings.end());
 }
 
+bool hidden_from(World::Viewer viewer, const SurfaceInfo* surface) {
+  if (!surface || viewer == World::Viewer::any) return false;
+  return viewer == World::Viewer::camera ? surface->no_image : surface->no_reflection;
+}
+
+// The first crossing of `shape` in (tmin, tmax) that `viewer` sees: a hidden surface is
+// passed through (the ray goes on from just beyond it, as POV-Ray's does).
+std::optional<Crossing> first_seen_crossing(const Shape& shape, const Ray& ray, double tmin,
+                                            double tmax, TraceStats& stats,
+                                            World::Viewer viewer) {
+  std::optional<Crossing> c = shape.first_crossing(ray, tmin, tmax, stats);
+  while (c && hidden_from(viewer, c->surface)) {
+    const double beyond = c->t + 1e-9 * (1.0 + std::abs(c->t));
+    c = shape.first_crossing(ray, beyond, tmax, stats);
+  }
+  return c;
+}
+
 }  // namespace
 
 struct World::Index {
@@ -36,7 +55,11 @@ World::World(const scene::Scene& scene, implicit::SupportCache* cache, implicit:
   std::vector<Box3> boxes;
   std::vector<ShapePtr> built;
   for (const scene::ObjectPtr& object : scene.objects) {
-    if (object) build_split_shapes(*object, built, cache, tracer);
+    if (!object) continue;
+    const size_t before = built.size();
+    build_split_shapes(*object, built, cache, tracer);
+    hollow_.resize(built.size(), object->hollow ? 1 : 0);
+    if (!object->hollow) solids_ += built.size() - before;
   }
   for (ShapePtr& shape : built) {
     const Box3 box = shape->bounds();
@@ -65,14 +88,15 @@ World::World(World&&) noexcept = default;
 Box3 World::bounds() const { return index_->bounds; }
 
 std::optional<Crossing> World::first_hit(const Ray& ray, double tmin, double tmax,
-                                         TraceStats& stats, Objects objects) const {
+                                         TraceStats& stats, Objects objects,
+                                         Viewer viewer) const {
   std::optional<Crossing> nearest;
   double reach = tmax;
   const bool skip_blockers = objects == Objects::letting_light_through;
   if (skip_blockers && blockers_ == shapes_.size()) return std::nullopt;
   auto ask = [&](size_t id, double& limit) {
     if (skip_blockers && blocks_light_[id]) return;
-    if (auto c = shapes_[id]->first_crossing(ray, tmin, limit, stats)) {
+    if (auto c = first_seen_crossing(*shapes_[id], ray, tmin, limit, stats, viewer)) {
       nearest = c;
       limit = c->t;  // only nearer objects matter now
     }
@@ -140,6 +164,15 @@ void World::shadow_crossings_brute_force(const Ray& ray, double tmin, double tma
   for (const ShapePtr& shape : shapes_) shape->crossings(ray, tmin, tmax, out, stats);
   drop_shadowless(out, first);
   sort_by_distance(out, first);
+}
+
+bool World::inside_solid(const Vec3& p) const {
+  if (solids_ == 0) return false;
+  for (size_t id = 0; id < shapes_.size(); ++id) {
+    if (hollow_[id]) continue;
+    if (contains(index_->inside_boxes[id], p) && shapes_[id]->inside(p)) return true;
+  }
+  return false;
 }
 
 bool World::inside_any(const Vec3& p) const {

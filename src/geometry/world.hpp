@@ -50,9 +50,15 @@ class World {
   // (Shape::blocks_light) with blocked() and follow the others crossing by crossing.
   enum class Objects { all, letting_light_through };
 
-  // The nearest crossing of any object in (tmin, tmax).
+  // Who looks along a ray: camera rays (and the rays they send on through transparent
+  // surfaces) do not see no_image surfaces, reflected rays (and theirs) no_reflection ones;
+  // shadow rays and the rest see every surface.
+  enum class Viewer { any, camera, reflection };
+
+  // The nearest crossing in (tmin, tmax) of any object, of the surfaces `viewer` sees.
   std::optional<Crossing> first_hit(const Ray& ray, double tmin, double tmax, TraceStats& stats,
-                                    Objects objects = Objects::all) const;
+                                    Objects objects = Objects::all,
+                                    Viewer viewer = Viewer::any) const;
   // Whether an object that blocks light outright crosses the ray in (tmin, tmax): an any-hit
   // query, no root refined.
   bool blocked(const Ray& ray, double tmin, double tmax, TraceStats& stats) const;
@@ -62,6 +68,10 @@ class World {
                         TraceStats& stats) const;
   // Whether p is inside any object (for rays that start inside a refracting solid).
   bool inside_any(const Vec3& p) const;
+  // Whether p is inside an object that is not hollow: POV-Ray draws no fog there.
+  bool inside_solid(const Vec3& p) const;
+  // Whether some object is not hollow (else inside_solid is always false).
+  bool has_solids() const { return solids_ > 0; }
 
   // The slow exact twins of first_hit and shadow_crossings: every object asked, no
   // hierarchy (tests compare them).
@@ -81,6 +91,8 @@ class World {
   std::vector<ShapePtr> shapes_;
   std::vector<uint8_t> blocks_light_;  // shapes_[i]->blocks_light(), asked once
   size_t blockers_ = 0;                // how many do
+  std::vector<uint8_t> hollow_;        // built from a hollow object
+  size_t solids_ = 0;                  // how many are not
   std::vector<Box3> bounds_;
   std::unique_ptr<const Index> index_;
 };

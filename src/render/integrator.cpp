@@ -8,6 +8,7 @@
 #include "render/area_light.hpp"
 #include "render/atmosphere.hpp"
 #include "render/finish.hpp"
+#include "render/interior_fade.hpp"
 #include "render/lights.hpp"
 #include "render/normal_perturbation.hpp"
 #include "render/pigment.hpp"
@@ -70,29 +71,54 @@ Vec3 Integrator::trace_camera_ray(const Ray& ray, RenderStats& stats) const {
   ++stats.camera_rays;
   // A camera with no ray there (outside a fisheye's circle): black, as in POV-Ray.
   if (ray.direction == Vec3(0.0)) return Vec3(0.0);
-  return trace(ray, RayState{}, 0.0, stats);
+  RayState state;
+  // POV-Ray 3.7 draws no fog along rays inside a solid that is not hollow (a camera under a
+  // plain `plane { y, 100 }` sees no fog; measured with povray): where the camera is, then
+  // the solids the rays enter.
+  state.camera_in_solid = !scene_.fogs.empty() && world_.has_solids() &&
+                          world_.inside_solid(ray.origin);
+  state.in_solid = state.camera_in_solid;
+  return trace(ray, state, 0.0, stats);
 }
 
 Vec3 Integrator::trace(const Ray& ray, const RayState& state, double tmin,
                        RenderStats& stats) const {
   ++stats.queries;
-  const std::optional<Crossing> crossing = world_.first_hit(ray, tmin, kInfinity, stats.trace);
-  if (!crossing) return apply_fogs(scene_.fogs, ray, kInfinity, sky_color(scene_, ray.direction));
+  const std::optional<Crossing> crossing = world_.first_hit(
+      ray, tmin, kInfinity, stats.trace, geometry::World::Objects::all, state.viewer);
+  if (!crossing) return fogged(ray, state, kInfinity, sky_color(scene_, ray.direction));
   if (state.level == 1) ++stats.hits;
-  const Vec3 color = shade(ray, *crossing, state, stats);
-  return apply_fogs(scene_.fogs, ray, crossing->t, color);
+  // A ray leaving a solid whose interior fades brings back light dimmed by the distance it
+  // went inside (from where it started: the surface where it entered).
+  const SurfaceInfo* left = crossing->surface;
+  const Vec3 fade = left && fades(left->interior) && glm::dot(ray.direction, crossing->normal) > 0.0
+                        ? interior_fade(left->interior, crossing->t)
+                        : Vec3(1.0);
+  const Vec3 color = fade * shade(ray, *crossing, state, stats);
+  return fogged(ray, state, crossing->t, color);
 }
+
+Vec3 Integrator::fogged(const Ray& ray, const RayState& state, double depth,
+                        const Vec3& color) const {
+  if (scene_.fogs.empty() || state.in_solid) return color;
+  return apply_fogs(scene_.fogs, ray, depth, color);
+}
+
 
 Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState& state,
                        RenderStats& stats) const {
   HitPoint hit;
   hit.point = ray.at(crossing.t);
-  const scene::Texture& texture = crossing.surface && crossing.surface->texture
-                                      ? *crossing.surface->texture
-                                      : fallback_texture();
   hit.view = ray.direction;
   hit.surface = crossing.surface;
   hit.entering = glm::dot(ray.direction, crossing.normal) < 0.0;
+  // Seen from within the solid, a surface wears its interior_texture when it has one.
+  const SurfaceInfo* surface = crossing.surface;
+  const scene::TexturePtr& worn =
+      surface && !hit.entering && surface->interior_texture ? surface->interior_texture
+      : surface                                              ? surface->texture
+                                                             : nullptr;
+  const scene::Texture& texture = worn ? *worn : fallback_texture();
   return shade_texture(texture, crossing.normal, hit, state, stats);
 }
 
@@ -111,10 +137,10 @@ Vec3 Integrator::shade_layer(const scene::Texture& texture, const Vec3& outward,
                              const RayState& state, RenderStats& stats) const {
   hit.finish = &texture.finish;
   hit.pigment = evaluate_pigment(texture.pigment, hit.point);
-  // Bumps tilt the outward normal; then both turn to face the viewer (the inside of a solid
-  // seen from within is lit like an outside).
-  const Vec3 shading = perturb_normal(texture.normal, hit.point, outward);
-  hit.normal = hit.entering ? shading : -shading;
+  // The normal turns to face the viewer (the inside of a solid seen from within is lit like an
+  // outside), then bumps tilt it: POV-Ray 3.7 bumps the side that is seen, so the inside of a
+  // bumped surface is not the outside's bumps turned over (measured: interior_texture.pov).
+  hit.normal = perturb_normal(texture.normal, hit.point, hit.entering ? outward : -outward);
 
   const scene::Color pigment = hit.pigment;
   Vec3 color = direct_light(hit, 1.0 - pigment.filter - pigment.transmit, stats);
@@ -134,14 +160,21 @@ Vec3 Integrator::direct_light(const HitPoint& hit, double opacity, RenderStats& 
   const scene::Finish& finish = *hit.finish;
   Vec3 diffuse = ambient_term(finish, scene_.settings.ambient_light, hit.pigment.rgb);
   Vec3 highlights(0.0);
+  const bool double_illuminated = hit.surface && hit.surface->double_illuminate;
   for (size_t index = 0; index < scene_.lights.size(); ++index) {
     const std::optional<LightArrival> arrival = light_arrival(scene_.lights[index], hit.point);
-    // A light behind the surface adds nothing: no shadow ray needed.
-    if (!arrival || !(glm::dot(hit.normal, arrival->to_light) > 0.0)) continue;
+    if (!arrival) continue;
+    // A light behind the surface adds nothing (no shadow ray needed), unless the surface is
+    // double_illuminate: then it lights the far side as if that side faced the viewer.
+    Vec3 normal = hit.normal;
+    if (!(glm::dot(normal, arrival->to_light) > 0.0)) {
+      if (!double_illuminated || !(glm::dot(normal, arrival->to_light) < 0.0)) continue;
+      normal = -normal;
+    }
     const Vec3 visible =
         light_visibility(index, hit.point, arrival->to_light, arrival->distance, stats);
     if (visible == Vec3(0.0)) continue;
-    const LightContribution lit = light_contribution(finish, hit.pigment.rgb, hit.normal, hit.view,
+    const LightContribution lit = light_contribution(finish, hit.pigment.rgb, normal, hit.view,
                                                      arrival->to_light, arrival->color * visible);
     diffuse += lit.diffuse;
     // POV-Ray 3.7: a shadowless light (a fill light) makes no phong or specular highlight.
@@ -175,7 +208,8 @@ Vec3 Integrator::light_visibility(size_t index, const Vec3& point, const Vec3& t
 
 bool Integrator::may_trace(const RayState& state, double factor, double& child_weight) const {
   if (state.level >= scene_.settings.max_trace_level) return false;
-  child_weight = state.weight * factor;
+  // A negative factor (`transmit -1`: POV-Ray subtracts what is behind) weighs by its size.
+  child_weight = state.weight * std::abs(factor);
   return child_weight >= scene_.settings.adc_bailout && child_weight > 0.0;
 }
 
@@ -185,7 +219,10 @@ Vec3 Integrator::reflected_light(const HitPoint& hit, const RayState& state,
   double weight = 0.0;
   if (!may_trace(state, max_channel(reflection), weight)) return Vec3(0.0);
   ++stats.reflected_rays;
-  const RayState child{state.level + 1, weight, state.medium};
+  RayState child = state;  // reflected: in the same medium
+  child.level = state.level + 1;
+  child.weight = weight;
+  child.viewer = geometry::World::Viewer::reflection;
   const Ray ray{hit.point, mirrored(hit.view, hit.normal)};
   return reflection * trace(ray, child, settings_.ray_offset, stats);
 }
@@ -201,7 +238,10 @@ Vec3 Integrator::transmitted_light(const HitPoint& hit, const Vec3& factor, cons
           : state.medium.left(hit.surface);
   const double ior_to = beyond.ior();
 
-  RayState child{state.level, weight, beyond};
+  RayState child{state.level, weight, beyond, state.viewer};
+  const SurfaceInfo* inside = beyond.innermost();
+  child.camera_in_solid = state.camera_in_solid;
+  child.in_solid = inside ? !inside->hollow : state.camera_in_solid;
   Vec3 direction = hit.view;
   if (ior_from != ior_to) {
     child.level = state.level + 1;  // a bent ray is a new level; a straight one is not
@@ -209,6 +249,8 @@ Vec3 Integrator::transmitted_light(const HitPoint& hit, const Vec3& factor, cons
       // Total internal reflection: the light stays in the medium it came from.
       direction = mirrored(hit.view, hit.normal);
       child.medium = state.medium;
+      child.in_solid = state.in_solid;
+      child.viewer = geometry::World::Viewer::reflection;
       ++stats.reflected_rays;
       return trace(Ray{hit.point, direction}, child, settings_.ray_offset, stats);
     }

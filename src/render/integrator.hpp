@@ -48,6 +48,12 @@ class Integrator {
     int level = 1;
     double weight = 1.0;
     MediumStack medium;
+    // Camera rays and the rays they transmit skip no_image surfaces; once a ray has been
+    // reflected, it and its descendants skip no_reflection ones.
+    geometry::World::Viewer viewer = geometry::World::Viewer::camera;
+    // Inside a solid that is not hollow (no fog along the ray); whether the camera is.
+    bool in_solid = false;
+    bool camera_in_solid = false;
   };
   // What shading needs to know about the hit point.
   struct HitPoint;
@@ -56,6 +62,8 @@ class Integrator {
              RenderStats& stats) const;
   Vec3 shade(const Ray& ray, const geometry::Crossing& crossing, const RayState& state,
              RenderStats& stats) const;
+  // `color` seen through the scene's fogs over `depth` along the ray (none inside a solid).
+  Vec3 fogged(const Ray& ray, const RayState& state, double depth, const Vec3& color) const;
   // A texture at the hit: the plain textures its texture patterns pick there (texture_map.hpp),
   // each shaded as a layer, added by weight.
   Vec3 shade_texture(const scene::Texture& texture, const Vec3& outward, const HitPoint& hit,

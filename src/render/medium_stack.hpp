@@ -19,6 +19,10 @@ class MediumStack {
 
   double ior() const { return size_ == 0 ? 1.0 : entries_[size_ - 1].ior; }
   size_t depth() const { return size_; }
+  // The innermost solid's surface (its interior), or null outside everything.
+  const geometry::SurfaceInfo* innermost() const {
+    return size_ == 0 ? nullptr : entries_[size_ - 1].surface;
+  }
 
   // The stack after entering `surface`'s solid.
   MediumStack entered(const geometry::SurfaceInfo* surface, double ior) const {

@@ -20,7 +20,9 @@ namespace convray::render {
 Vec3 shadow_transmittance(const geometry::World& world, const Ray& ray, double tmin,
                           double tmax, double step, RenderStats& stats);
 
-// What one crossed surface lets through: f * pigment + t of its pigment at `point`.
-Vec3 surface_transmittance(const geometry::SurfaceInfo& surface, const Vec3& point);
+// What one crossed surface lets through: f * pigment + t of its pigment at `point` (of its
+// interior_texture's where a ray leaving the solid crosses it, when it has one).
+Vec3 surface_transmittance(const geometry::SurfaceInfo& surface, const Vec3& point,
+                           bool entering = true);
 
 }  // namespace convray::render

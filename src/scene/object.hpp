@@ -201,9 +201,15 @@ struct Object {
   std::optional<UnsupportedObject> unsupported;
   Transform transform;      // own space -> world (or parent CSG space)
   TexturePtr texture;       // null: inherited from the CSG parent, else the default texture
+  // interior_texture: what the inside of the surface wears (null: the parent's, else the
+  // texture); rays that meet the surface from within the solid see it.
+  TexturePtr interior_texture;
   std::optional<Interior> interior;
   bool inverse = false;     // inside and outside swapped
   bool no_shadow = false;   // casts no shadow
+  bool no_image = false;       // not seen by camera rays (nor through what they pass)
+  bool no_reflection = false;  // not seen in reflections
+  bool double_illuminate = false;  // lit on both sides: lights behind the surface light it too
   bool hollow = false;
   // union only: POV-Ray's split_union (on by default) puts the members into the scene's
   // hierarchy; off keeps the union one object (with a hierarchy of its own inside).

@@ -176,6 +176,14 @@ struct Normal {
 
 struct Interior {
   double ior = 1.0;
+  // POV-Ray's fade: light crossing d units inside keeps att + (1 - att) fade_color, with
+  // att = 1 / (1 + (d / fade_distance)^fade_power), or exp(-d / fade_distance) for
+  // fade_power >= 1000 (render/interior_fade.hpp). fade_distance 0: no fade.
+  double fade_distance = 0.0;
+  double fade_power = 0.0;
+  Vec3 fade_color{0.0};
+
+  bool operator==(const Interior&) const = default;
 };
 
 struct Texture;

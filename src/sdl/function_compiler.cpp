@@ -339,9 +339,10 @@ class FunctionCompiler {
 // functions.inc's f_noise3d.
 constexpr int kNoise3d = 76;
 
-// f(x, y, z): the red channel (the grey) of `source` at (x, y, z).
+// f(x, y, z): the red channel (the grey of a pattern) of `source` at (x, y, z), or `component`.
 std::shared_ptr<const scene::Function> color_source_function(
-    std::shared_ptr<const scene::ColorSource> source) {
+    std::shared_ptr<const scene::ColorSource> source,
+    scene::ColorComponent component = scene::ColorComponent::red) {
   auto compiled = std::make_shared<scene::Function>(std::vector<std::string>{"x", "y", "z"});
   std::vector<std::uint32_t> operands;
   for (std::uint32_t i = 0; i < 3; ++i) {
@@ -352,6 +353,7 @@ std::shared_ptr<const scene::Function> color_source_function(
   }
   scene::FunctionNode value;
   value.op = scene::FunctionOp::color;
+  value.component = component;
   value.index = compiled->add_color_source(std::move(source));
   compiled->set_root(compiled->add(value, operands));
   return compiled;
@@ -433,6 +435,15 @@ void Parser::Impl::compile_function(UserFunction& function) {
   FunctionCompiler compiler(*this, *compiled, function.name);
   compiled->set_root(compiler.expression());
   function.compiled = std::move(compiled);
+}
+
+std::shared_ptr<const scene::Function> Parser::parse_pigment_pattern() {
+  Parser::Impl& impl = *impl_;
+  const TokenRef at = impl.ref();
+  // POV-Ray's pigment_pattern is the grey (0.297 R + 0.589 G + 0.114 B) of the pigment,
+  // filter and transmit aside (measured with #debug), clipped to [0, 1] as any pattern.
+  const scene::Pigment read = items::parse_pigment(*this, {});
+  return color_source_function(impl.color_sources(at).pigment(read), scene::ColorComponent::gray);
 }
 
 std::shared_ptr<const scene::Function> Parser::parse_function_block() {

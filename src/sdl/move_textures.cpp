@@ -94,7 +94,7 @@ namespace {
 bool has_inner_textures(const scene::Object& object);
 
 bool has_textures(const scene::Object& object) {
-  return object.texture || has_inner_textures(object);
+  return object.texture || object.interior_texture || has_inner_textures(object);
 }
 
 bool has_inner_textures(const scene::Object& object) {
@@ -121,6 +121,7 @@ void move_inner_textures(scene::Object& object, const scene::Transform& transfor
       if (!has_textures(*child)) continue;  // shared as it is: nothing in it moves
       auto copy = std::make_shared<scene::Object>(*child);
       copy->texture = moved_texture(copy->texture, transform);
+      copy->interior_texture = moved_texture(copy->interior_texture, transform);
       move_inner_textures(*copy, transform);
       child = std::move(copy);
     }

@@ -58,8 +58,9 @@ bool ObjectBuilder::parse_modifier() {
   } else if (word == "clipped_by" || word == "bounded_by") {
     parse_clip_or_bound(word == "clipped_by");
   } else if (word == "interior_texture") {
-    parse_texture(parser_, parser_.defaults().texture);  // `interior_texture { pigment ... }`
-    warn_once(parser_, loc, "interior_texture is ignored: both sides get the object's texture");
+    // `interior_texture { pigment ... }`, placed by the transforms that follow, as the texture
+    object_.interior_texture = std::make_shared<const scene::Texture>(
+        parse_texture(parser_, parser_.defaults().texture));
   } else {
     parser_.next();
     return parse_flag(word, loc);
@@ -70,6 +71,9 @@ bool ObjectBuilder::parse_modifier() {
 void ObjectBuilder::apply_transform(const scene::Transform& transform) {
   object_.transform = object_.transform.then(transform);
   if (texture_) move_texture(*texture_, transform);
+  if (object_.interior_texture) {
+    object_.interior_texture = moved_texture(object_.interior_texture, transform);
+  }
   block_transform_ = block_transform_.then(transform);
 }
 
@@ -155,6 +159,12 @@ bool ObjectBuilder::parse_flag(const std::string& word, const SourceLoc& loc) {
     object_.inverse = !object_.inverse;
   } else if (word == "no_shadow") {
     object_.no_shadow = true;
+  } else if (word == "no_image") {
+    object_.no_image = optional_bool(parser_);
+  } else if (word == "no_reflection") {
+    object_.no_reflection = optional_bool(parser_);
+  } else if (word == "double_illuminate") {
+    object_.double_illuminate = optional_bool(parser_);
   } else if (word == "hollow") {
     object_.hollow = optional_bool(parser_);
   } else if (word == "split_union") {

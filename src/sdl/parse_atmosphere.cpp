@@ -50,6 +50,7 @@ void parse_fog_item(Parser& parser, Block& block, scene::Fog& fog) {
     fog.altitude = float_param(parser, word);
   } else if (word == "turbulence") {
     fog.turbulence.amount = vector_param(parser, word);
+    warn_once(parser, loc, "fog turbulence is not rendered by convray: the fog's density is even");
   } else if (word == "octaves") {
     fog.turbulence.octaves = int_param(parser, word);
   } else if (word == "omega") {

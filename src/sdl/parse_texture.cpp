@@ -106,10 +106,20 @@ scene::Interior parse_interior(Parser& parser, const scene::Interior& start) {
       }
       continue;
     }
+    if (word == "fade_distance") {
+      interior.fade_distance = float_param(parser, word);
+      continue;
+    }
+    if (word == "fade_power") {
+      interior.fade_power = float_param(parser, word);
+      continue;
+    }
+    if (word == "fade_color" || word == "fade_colour") {
+      interior.fade_color = color_param(parser).rgb;
+      continue;
+    }
     if (word == "media") {
       skip_braced(parser, word, item_loc);
-    } else if (word == "fade_color" || word == "fade_colour") {
-      color_param(parser);
     } else {
       float_param(parser, word);
     }

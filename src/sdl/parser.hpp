@@ -80,6 +80,9 @@ class Parser {
   // At `function { body }` (isosurfaces, function patterns): the body compiled as a function
   // of x, y and z (function_compiler.cpp). What convray cannot evaluate yet fails here.
   std::shared_ptr<const scene::Function> parse_function_block();
+  // At `pigment_pattern { PIGMENT }`: f(x, y, z), the grey of the pigment's colour there
+  // (function_compiler.cpp).
+  std::shared_ptr<const scene::Function> parse_pigment_pattern();
 
   // --- Context.
   const ParseOptions& options() const;

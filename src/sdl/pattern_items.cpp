@@ -41,7 +41,7 @@ constexpr std::string_view kPatternNames[] = {
 // "unexpected".
 constexpr std::string_view kUnsupportedPatterns[] = {
     "crackle",      "cells",         "spiral2",
-    "julia",        "bump_map",      "pigment_pattern",
+    "julia",        "bump_map",
     "object",     "density_file", "facets",
     "average",      "tiling",        "pavement",    "square",
     "triangular", "slope",        "aoi",          "image_pattern", "magnet",
@@ -68,6 +68,11 @@ std::optional<scene::Pattern> parse_pattern_keyword(Parser& parser, scene::Patte
   if (at_word(parser, "function")) {
     space.pattern = scene::Pattern::function;
     space.function = parser.parse_function_block();
+    return space.pattern;
+  }
+  if (at_word(parser, "pigment_pattern")) {
+    space.pattern = scene::Pattern::function;
+    space.function = parser.parse_pigment_pattern();
     return space.pattern;
   }
   for (const PatternKeyword& keyword : kPatterns) {

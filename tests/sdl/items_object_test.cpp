@@ -123,11 +123,14 @@ TEST(ItemsObject, ObjectOfALightSourceAddsTheLightAtTheTopLevel) {
                          "'L' is a light_source"));
 }
 
-TEST(ItemsObject, InteriorTextureIsParsedAndIgnored) {
-  const auto result = parse("box { -1, 1 interior_texture { pigment { rgb 0 } } }");
-  // interior_texture is not the texture: the object has the default one (black pigment).
-  EXPECT_EQ(only_object(result)->texture->pigment.color.rgb, Vec3(0.0));
-  EXPECT_TRUE(has_warning(result, "interior_texture is ignored"));
+TEST(ItemsObject, InteriorTextureIsKeptBesideTheTexture) {
+  const auto result =
+      parse("box { -1, 1 pigment { rgb 1 } interior_texture { pigment { rgb <1, 0, 0> } } }");
+  // interior_texture is not the texture: each keeps its own pigment.
+  EXPECT_EQ(only_object(result)->texture->pigment.color.rgb, Vec3(1.0));
+  ASSERT_TRUE(only_object(result)->interior_texture);
+  EXPECT_EQ(only_object(result)->interior_texture->pigment.color.rgb, Vec3(1, 0, 0));
+  EXPECT_FALSE(has_warning(result, "interior_texture"));
 }
 
 TEST(ItemsObject, DefaultWithoutHashSetsTheDefaults) {
@@ -214,7 +217,12 @@ TEST(ItemsObject, FlagsAndInterior) {
   ASSERT_TRUE(object->interior.has_value());
   EXPECT_EQ(object->interior->ior, 1.5);
   EXPECT_FALSE(only_object(parse("sphere { 0, 1 hollow off }"))->hollow);
-  EXPECT_TRUE(has_warning(parse("sphere { 0, 1 no_image }"), "'no_image' is ignored"));
+  EXPECT_TRUE(object->double_illuminate);
+  const auto hidden = parse("sphere { 0, 1 no_image no_reflection }");
+  EXPECT_TRUE(only_object(hidden)->no_image);
+  EXPECT_TRUE(only_object(hidden)->no_reflection);
+  EXPECT_FALSE(has_warning(hidden, "ignored"));
+  EXPECT_TRUE(has_warning(parse("sphere { 0, 1 no_radiosity }"), "'no_radiosity' is ignored"));
 }
 
 TEST(ItemsObject, SplitUnionIsOnUnlessTurnedOff) {

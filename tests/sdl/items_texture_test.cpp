@@ -182,10 +182,15 @@ TEST(ItemsTexture, ReflectionBlockMinimumAndMaximumWithoutAComma) {
   expect_near(texture_of(colours).finish.reflection, Vec3(0.5, 0.6, 0.7));
 }
 
-TEST(ItemsTexture, InteriorAndIgnoredFade) {
-  const auto result = parse("sphere { 0, 1 interior { ior 1.5 fade_distance 2 fade_power 1 } }");
-  EXPECT_EQ(only_object(result)->interior->ior, 1.5);
-  EXPECT_TRUE(has_warning(result, "'fade_distance' is ignored"));
+TEST(ItemsTexture, InteriorAndFade) {
+  const auto result = parse(
+      "sphere { 0, 1 interior { ior 1.5 fade_distance 2 fade_power 1 fade_color rgb <1, 0, 0> } }");
+  const scene::Interior& interior = *only_object(result)->interior;
+  EXPECT_EQ(interior.ior, 1.5);
+  EXPECT_EQ(interior.fade_distance, 2.0);
+  EXPECT_EQ(interior.fade_power, 1.0);
+  EXPECT_EQ(interior.fade_color, Vec3(1, 0, 0));
+  EXPECT_FALSE(has_warning(result, "fade"));
 }
 
 TEST(ItemsTexture, DefaultDirectiveFeedsNewTextures) {
