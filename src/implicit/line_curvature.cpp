@@ -85,7 +85,9 @@ LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFr
     : weight_(std::abs(strength)),
       radius_(radius),
       r2_(radius * radius),
-      measure_(frame.area),
+      // A triangle with no area, or one too large to have a finite one, has no field (the
+      // batch gives it weight 0): nothing to bend.
+      measure_(frame.has_area() ? frame.area : 0.0),
       length_(measure_),
       has_extent_(true),
       has_moments_(true),
