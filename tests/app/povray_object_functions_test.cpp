@@ -3,9 +3,6 @@
 // hits, misses and the normal written into trace's fourth argument).
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,35 +13,11 @@ namespace {
 
 class PovRayObjectFunctions : public PovRayPictureTest {
  protected:
-  // The numbers of every #debug line, in order: POV-Ray's (its debug stream) and ours (our
-  // messages, "file:line:col: #debug: TEXT").
-  std::vector<double> numbers(const std::string& text) {
-    std::vector<double> out;
-    const std::regex number(R"([-+]?[0-9]+\.[0-9]+)");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
-         it != std::sregex_iterator(); ++it) {
-      out.push_back(std::stod(it->str()));
-    }
-    return out;
-  }
   void expect_same_numbers(const std::string& scene) {
-    std::ofstream(file("scene.pov")) << scene;
-    const std::string pov = "cd '" + dir_.string() +
-                            "' && povray +Iscene.pov +W1 +H1 -F -D -GA +GDdebug.txt > /dev/null "
-                            "2>&1";
-    ASSERT_EQ(std::system(pov.c_str()), 0);
-    const CliRun ours =
-        run_convray_after("cd '" + dir_.string() + "' && ", "+Iscene.pov +W1 +H1 -D +Oout.png");
-    ASSERT_EQ(ours.exit_code, 0) << ours.err;
-    const std::vector<double> expected = numbers(read_file(dir_ / "debug.txt"));
-    std::string debug;  // our #debug texts only
-    std::istringstream lines(ours.all());
-    for (std::string line; std::getline(lines, line);) {
-      const size_t at = line.find("#debug: ");
-      if (at != std::string::npos) debug += line.substr(at + 8) + "\n";
-    }
-    const std::vector<double> found = numbers(debug);
-    ASSERT_EQ(found.size(), expected.size()) << ours.all();
+    std::vector<double> expected, found;
+    std::string output;
+    debug_numbers(scene, expected, found, &output);
+    ASSERT_EQ(found.size(), expected.size()) << output;
     ASSERT_GT(found.size(), 20u);
     // POV-Ray pads its boxes by about 1e-5.
     for (size_t i = 0; i < found.size(); ++i) EXPECT_NEAR(found[i], expected[i], 1e-4) << i;

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -63,6 +65,41 @@ class PovRayPictureTest : public CliTest {
     EXPECT_EQ(ours.exit_code, 0) << ours.err;
     convray_err = ours.err;
     return psnr(read_rgb8(file(name + "_pov.png")), read_rgb8(file(name + "_our.png")));
+  }
+
+  // Runs `scene` (written as scene.pov) through both programs at 1x1 and gathers the numbers
+  // of every #debug line, in order: POV-Ray's (its debug stream) into `pov`, ours (our
+  // messages, "file:line:col: #debug: TEXT") into `ours`. `our_output` gets all we printed.
+  void debug_numbers(const std::string& scene, std::vector<double>& pov, std::vector<double>& ours,
+                     std::string* our_output = nullptr) {
+    std::ofstream(file("scene.pov")) << scene;
+    const std::string command = "cd '" + dir_.string() +
+                                "' && povray +Iscene.pov +W1 +H1 -F -D -GA +GDdebug.txt "
+                                "> /dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const CliRun run =
+        run_convray_after("cd '" + dir_.string() + "' && ", "+Iscene.pov +W1 +H1 -D +Oout.png");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    if (our_output) *our_output = run.all();
+    std::string debug;
+    std::istringstream lines(run.all());
+    for (std::string line; std::getline(lines, line);) {
+      const size_t at = line.find("#debug: ");
+      if (at != std::string::npos) debug += line.substr(at + 8) + "\n";
+    }
+    pov = numbers(read_file(dir_ / "debug.txt"));
+    ours = numbers(debug);
+  }
+
+  // The decimal numbers (with a point) in `text`, in order.
+  static std::vector<double> numbers(const std::string& text) {
+    std::vector<double> out;
+    const std::regex number(R"([-+]?[0-9]+\.[0-9]+)");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
+         it != std::sregex_iterator(); ++it) {
+      out.push_back(std::stod(it->str()));
+    }
+    return out;
   }
 
   std::string convray_err, povray_messages;

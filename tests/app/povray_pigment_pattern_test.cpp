@@ -3,9 +3,6 @@
 // at the same points for plain, mapped, layered-pattern and transformed pigments.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,38 +11,7 @@
 namespace convray::testing {
 namespace {
 
-class PovRayPigmentPattern : public PovRayPictureTest {
- protected:
-  // The numbers of our #debug messages and of POV-Ray's debug stream for `scene`.
-  void debug_numbers(const std::string& scene, std::vector<double>& pov,
-                     std::vector<double>& ours) {
-    std::ofstream(file("scene.pov")) << scene;
-    const std::string command = "cd '" + dir_.string() +
-                                "' && povray +Iscene.pov +W1 +H1 -F -D -GA +GDdebug.txt "
-                                "> /dev/null 2>&1";
-    ASSERT_EQ(std::system(command.c_str()), 0);
-    const CliRun run =
-        run_convray_after("cd '" + dir_.string() + "' && ", "+Iscene.pov +W1 +H1 -D +Oout.png");
-    ASSERT_EQ(run.exit_code, 0) << run.err;
-    std::string debug;
-    std::istringstream lines(run.all());
-    for (std::string line; std::getline(lines, line);) {
-      const size_t at = line.find("#debug: ");
-      if (at != std::string::npos) debug += line.substr(at + 8) + "\n";
-    }
-    pov = numbers(read_file(dir_ / "debug.txt"));
-    ours = numbers(debug);
-  }
-  static std::vector<double> numbers(const std::string& text) {
-    std::vector<double> out;
-    const std::regex number(R"([-+]?[0-9]+\.[0-9]+)");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
-         it != std::sregex_iterator(); ++it) {
-      out.push_back(std::stod(it->str()));
-    }
-    return out;
-  }
-};
+class PovRayPigmentPattern : public PovRayPictureTest {};
 
 TEST_F(PovRayPigmentPattern, TheValueIsThePigmentsGrey) {
   SKIP_WITHOUT_POVRAY();
