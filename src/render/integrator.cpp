@@ -65,18 +65,25 @@ struct Integrator::HitPoint {
 
 Integrator::Integrator(const scene::Scene& scene, const geometry::World& world,
                        const IntegratorSettings& settings)
-    : scene_(scene), world_(world), settings_(settings) {}
+    : scene_(scene),
+      world_(world),
+      settings_(settings),
+      camera_location_in_solid_(in_solid_seen_by_fog(scene.camera.location)) {}
+
+// POV-Ray 3.7 draws no fog along rays inside a solid that is not hollow (a camera under a
+// plain `plane { y, 100 }` sees no fog; measured with povray): where the camera is, then the
+// solids the rays enter. Without fog it does not matter, and is not asked.
+bool Integrator::in_solid_seen_by_fog(const Vec3& origin) const {
+  return !scene_.fogs.empty() && world_.has_solids() && world_.inside_solid(origin);
+}
 
 Vec3 Integrator::trace_camera_ray(const Ray& ray, RenderStats& stats) const {
   ++stats.camera_rays;
   // A camera with no ray there (outside a fisheye's circle): black, as in POV-Ray.
   if (ray.direction == Vec3(0.0)) return Vec3(0.0);
   RayState state;
-  // POV-Ray 3.7 draws no fog along rays inside a solid that is not hollow (a camera under a
-  // plain `plane { y, 100 }` sees no fog; measured with povray): where the camera is, then
-  // the solids the rays enter.
-  state.camera_in_solid = !scene_.fogs.empty() && world_.has_solids() &&
-                          world_.inside_solid(ray.origin);
+  state.camera_in_solid = ray.origin == scene_.camera.location ? camera_location_in_solid_
+                                                               : in_solid_seen_by_fog(ray.origin);
   state.in_solid = state.camera_in_solid;
   return trace(ray, state, 0.0, stats);
 }
@@ -103,7 +110,6 @@ Vec3 Integrator::fogged(const Ray& ray, const RayState& state, double depth,
   if (scene_.fogs.empty() || state.in_solid) return color;
   return apply_fogs(scene_.fogs, ray, depth, color);
 }
-
 
 Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState& state,
                        RenderStats& stats) const {

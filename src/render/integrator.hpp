@@ -86,6 +86,10 @@ class Integrator {
   const scene::Scene& scene_;
   const geometry::World& world_;
   IntegratorSettings settings_;
+  // Whether the camera's location lies inside a solid that is not hollow (only asked with
+  // fog): where every ray of a perspective camera starts, so asked once, not per ray.
+  bool camera_location_in_solid_ = false;
+  bool in_solid_seen_by_fog(const Vec3& origin) const;
 };
 
 }  // namespace convray::render
