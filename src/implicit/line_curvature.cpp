@@ -111,51 +111,39 @@ void LineCurvature::prepare_triangle() const {
   const Ray& ray = *ray_;
   const Vec3 corners[3] = {tri.a, tri.b, tri.c};
   const Vec3& n = frame_->normal;
-  height_[0] = glm::dot(n, ray.origin - tri.a);
-  height_[1] = glm::dot(n, ray.direction);
+  reach_.height[0] = glm::dot(n, ray.origin - tri.a);
+  reach_.height[1] = glm::dot(n, ray.direction);
   for (int k = 0; k < 3; ++k) {
     const Vec3& v = corners[k];
     // In the plane, into the triangle; unit, as n and the edge's direction are unit and
     // perpendicular.
     const Vec3 inward = glm::cross(n, frame_->direction[k]);
-    outside_[k][0] = -glm::dot(inward, ray.origin - v);
-    outside_[k][1] = -glm::dot(inward, ray.direction);
+    reach_.outside[k][0] = -glm::dot(inward, ray.origin - v);
+    reach_.outside[k][1] = -glm::dot(inward, ray.direction);
   }
   prepared_ = true;
 }
 
 double LineCurvature::area_within(double a, double b) const {
   if (!prepared_) prepare_triangle();
-  const double mid = 0.5 * (a + b), reach = radius_ + 0.5 * (b - a);
-  const double height = height_[0] + height_[1] * mid;
-  const double rho2 = reach * reach - height * height;
-  if (!(rho2 > 0.0)) return 0.0;
-  double e = -kInfinity;
-  for (const auto& edge : outside_) e = std::max(e, edge[0] + edge[1] * mid);
-  if (e <= 0.0) return std::min(measure_, kPi * rho2);  // the foot is inside the triangle
-  if (e * e >= rho2) return 0.0;
-  return std::min(measure_, 2.0 * (std::sqrt(rho2) - e) * std::sqrt(rho2 - e * e));
-}
-
-// A lower bound on |x|^2 / R^2 between a point of the window and a point of the triangle:
-// the squared distance to the plane plus that past an edge, each at least its smaller value
-// at the window's ends (both are linear in t; where the height changes sign it is 0).
-double LineCurvature::nearest_s(double a, double b) const {
-  if (!prepared_) prepare_triangle();
-  const double ha = height_[0] + height_[1] * a, hb = height_[0] + height_[1] * b;
-  const double h = (ha > 0.0) != (hb > 0.0) ? 0.0 : std::min(std::abs(ha), std::abs(hb));
-  double e = 0.0;
-  for (const auto& edge : outside_) {
-    e = std::max(e, std::min(edge[0] + edge[1] * a, edge[0] + edge[1] * b));
-  }
-  return std::min(1.0, (h * h + e * e) / r2_);
+  const auto& h = reach_.height;
+  const auto& o = reach_.outside;
+  return triangle_area_within(radius_, measure_, h[0], h[1], o[0][0], o[0][1], o[1][0], o[1][1],
+                              o[2][0], o[2][1], a, b);
 }
 
 double LineCurvature::bend_down(double a, double b) const {
   if (!triangle_) return weight_ * 4.0 * measure_ / r2_;
-  // u.H.u >= -4 (1 - s) / R^2, and s is at least nearest_s over the triangle.
-  const double within = area_within(a, b) * (1.0 - nearest_s(a, b));
-  return weight_ * std::min(4.0 * within / r2_, limit_);
+  if (!prepared_) prepare_triangle();
+  const auto& h = reach_.height;
+  const auto& o = reach_.outside;
+  return triangle_down_bend(weight_, radius_, r2_, measure_, limit_, h[0], h[1], o[0][0],
+                            o[0][1], o[1][0], o[1][1], o[2][0], o[2][1], a, b);
+}
+
+LineCurvature::DownTerms LineCurvature::down_terms() const {
+  if (triangle_ && !prepared_) prepare_triangle();
+  return {weight_, radius_, r2_, measure_, limit_, down_anywhere_, triangle_, reach_};
 }
 
 }  // namespace convray::implicit

@@ -38,6 +38,7 @@
 
 #include "core/ray.hpp"
 #include "implicit/surface_impl.hpp"
+#include "implicit/triangle_reach.hpp"
 
 namespace convray::implicit {
 
@@ -65,6 +66,16 @@ class LineCurvature {
   // 2 pi; up: no cheap bound, infinity): a constant for a first test before down().
   double down_anywhere() const { return flipped_ ? kInfinity : down_anywhere_; }
 
+  // What down(a, b) is made of, for DownBendTable's vectorized sums (a triangle's plane and
+  // edges are prepared here). Only for a positive strength (not flipped).
+  struct DownTerms {
+    double weight, radius, r2, measure, limit, anywhere;
+    bool triangle;
+    TriangleReach reach;
+  };
+  bool flipped() const { return flipped_; }
+  DownTerms down_terms() const;
+
  private:
   // The same for the skeleton's integral of K with a positive strength.
   double bend_up(double a, double b) const;
@@ -72,9 +83,8 @@ class LineCurvature {
   // The plane and edges of the triangle, along the line: made when first asked for (most
   // windows never need them).
   void prepare_triangle() const;
-  // A bound on the triangle's area within R of the window (line_curvature.cpp).
+  // A bound on the triangle's area within R of the window (triangle_reach.hpp).
   double area_within(double a, double b) const;
-  double nearest_s(double a, double b) const;
 
   double weight_ = 0.0;            // |strength|
   double radius_ = 0.0, r2_ = 0.0;  // R, R^2
@@ -95,8 +105,7 @@ class LineCurvature {
   const field::TriangleFrame* frame_ = nullptr;
   const Ray* ray_ = nullptr;
   mutable bool prepared_ = false;
-  mutable double height_[2] = {0.0, 0.0};
-  mutable double outside_[3][2] = {};
+  mutable TriangleReach reach_;
 };
 
 // Inline: the march sums it over every primitive near each window it weighs.

@@ -8,6 +8,7 @@
 #include "core/bracket_refine.hpp"
 #include "field/triangle_batch.hpp"
 #include "field/triangle_quartic.hpp"
+#include "implicit/down_bend_table.hpp"
 #include "implicit/line_curvature.hpp"
 
 namespace convray::implicit {
@@ -85,11 +86,16 @@ class ClusterField {
   double origin_t_ = 0.0;  // where the quartics' parameter s is 0
   // Storage kept from ray to ray (a cluster is marched by one thread at a time).
   static thread_local std::vector<Bending> members_;  // every primitive, for the curvature
+  // Their downward bounds side by side (the march's usual question); unused (`by_table_`
+  // false) when a member has a negative strength, whose down is its field's up.
+  static thread_local DownBendTable down_;
+  bool by_table_ = true;
   static thread_local std::vector<Member> others_;    // those outside the batches
   static thread_local std::vector<Batch> batches_;
 };
 
 thread_local std::vector<ClusterField::Bending> ClusterField::members_;
+thread_local DownBendTable ClusterField::down_;
 thread_local std::vector<ClusterField::Member> ClusterField::others_;
 thread_local std::vector<ClusterField::Batch> ClusterField::batches_;
 
@@ -115,6 +121,11 @@ ClusterField::ClusterField(const Impl& s, const Ray& ray,
   }
   for (size_t k = 0; k < batches_used_; ++k) {
     batches_[k].batch.assign(s.triangles, s.frames, batches_[k].triangles);
+  }
+  down_.clear();
+  for (const Bending& m : members_) by_table_ = by_table_ && !m.curvature.flipped();
+  if (by_table_) {
+    for (const Bending& m : members_) down_.add(m.enter, m.exit, m.curvature);
   }
 }
 
@@ -212,6 +223,7 @@ double ClusterField::value_minus_threshold(double t) {
 Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t).gradient; }
 
 double ClusterField::curvature(double a, double b, bool upward, bool anywhere) const {
+  if (!upward && by_table_) return down_.sum(a, b, anywhere) / s_.threshold;
   double sum = 0.0;
   for (const Bending& m : members_) {
     if (m.enter > b) break;  // the cluster is sorted by entry

@@ -1,0 +1,39 @@
+#pragma once
+// The window march's most frequent certificate: how far the primitives whose support meets a
+// window [a, b] may bend down there, summed (ClusterField::curvature below T). The march
+// asks it for every window it weighs, over every member of the cluster, so the members'
+// terms are kept here side by side, one array per term, and each member's bound is computed
+// in SIMD lanes (the same formula and bits as LineCurvature::down, triangle_reach.hpp) and
+// then summed in member order (the same sum as one member after the other).
+#include <cstddef>
+#include <vector>
+
+#include "implicit/line_curvature.hpp"
+
+namespace convray::implicit {
+
+class DownBendTable {
+ public:
+  void clear();
+  // Members come in the cluster's order, by entry; `curvature` must have a positive strength
+  // (LineCurvature::flipped() false).
+  void add(double enter, double exit, const LineCurvature& curvature);
+  size_t size() const { return enter_.size(); }
+
+  // The sum of down(a, b) over the members whose support meets [a, b]; with `anywhere`, of
+  // each one's bound over its whole line (LineCurvature::down_anywhere) instead.
+  double sum(double a, double b, bool anywhere) const;
+
+ private:
+  // How many members enter at or before b (they are sorted by entry).
+  size_t entered_by(double b) const;
+
+  std::vector<double> enter_, exit_, anywhere_;
+  // The terms of triangle_down_bend; a member that is not a triangle has triangle_ 0 and
+  // bends by its `anywhere_` on any window.
+  std::vector<double> weight_, radius_, r2_, measure_, limit_, triangle_;
+  std::vector<double> h0_, h1_, o00_, o01_, o10_, o11_, o20_, o21_;
+  mutable std::vector<double> bend_;  // per member, for the ordered sum
+};
+
+}  // namespace convray::implicit

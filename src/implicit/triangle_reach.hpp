@@ -1,0 +1,70 @@
+#pragma once
+// Where a triangle lies relative to a window [a, b] of a line, for the window march's
+// curvature bounds (line_curvature.hpp explains them): the triangle's height above its plane
+// and the outward distances past its three edges of the foot of p(t), each linear in t,
+// given by its value at t = 0 and its slope.
+//
+// The formulas are branch-free (every condition a select) so that one copy serves both the
+// scalar LineCurvature and DownBendTable's vectorized loop, with the same bits.
+#include <algorithm>
+#include <cmath>
+
+#include "core/ray.hpp"
+
+namespace convray::implicit {
+
+struct TriangleReach {
+  double height[2] = {0.0, 0.0};  // distance to the plane along the normal: h0 + h1 t
+  double outside[3][2] = {};      // past edge k, in the plane: o0 + o1 t (<= 0: inside its line)
+};
+
+// A bound on the triangle's area (`measure`) within R of the window: within the ball of
+// radius R + w/2 around the window's middle (w the window's length), which holds every
+// point's ball. That ball meets the plane in a disk of radius rho around the middle's foot;
+// where the foot lies a distance e outside an edge's line, the triangle keeps to the disk's
+// segment beyond that line, of area at most 2 (rho - e) sqrt(rho^2 - e^2).
+inline double triangle_area_within(double radius, double measure, double h0, double h1,
+                                   double o00, double o01, double o10, double o11, double o20,
+                                   double o21, double a, double b) {
+  const double mid = 0.5 * (a + b), reach = radius + 0.5 * (b - a);
+  const double height = h0 + h1 * mid;
+  const double rho2 = reach * reach - height * height;
+  const double e = std::max(std::max(o00 + o01 * mid, o10 + o11 * mid), o20 + o21 * mid);
+  const double rho2_or_0 = std::max(rho2, 0.0);  // the square roots' arguments, never NaN
+  const double segment = std::min(
+      measure, 2.0 * (std::sqrt(rho2_or_0) - e) * std::sqrt(std::max(rho2_or_0 - e * e, 0.0)));
+  const double past_edge = e * e >= rho2 ? 0.0 : segment;
+  const double area = e <= 0.0 ? std::min(measure, kPi * rho2) : past_edge;
+  return rho2 > 0.0 ? area : 0.0;  // no disk (or NaN): nothing within reach
+}
+
+// A lower bound on |x|^2 / R^2 between a point of the window and a point of the triangle:
+// the squared distance to the plane plus that past an edge, each at least its smaller value
+// at the window's ends (both are linear in t; where the height changes sign it is 0).
+inline double triangle_nearest_s(double r2, double h0, double h1, double o00, double o01,
+                                 double o10, double o11, double o20, double o21, double a,
+                                 double b) {
+  const double ha = h0 + h1 * a, hb = h0 + h1 * b;
+  const double nearer = std::min(std::abs(ha), std::abs(hb));
+  const bool crosses = (ha > 0.0) != (hb > 0.0);
+  const double h = crosses ? 0.0 : nearer;
+  const double e0 = std::min(o00 + o01 * a, o00 + o01 * b);
+  const double e1 = std::min(o10 + o11 * a, o10 + o11 * b);
+  const double e2 = std::min(o20 + o21 * a, o20 + o21 * b);
+  const double e = std::max(std::max(std::max(0.0, e0), e1), e2);
+  return std::min(1.0, (h * h + e * e) / r2);
+}
+
+// How far a triangle's field (strength `weight` >= 0) may bend down over [a, b]:
+// u.H.u >= -4 (1 - s) / R^2 over its area within reach, at most `limit` (2 pi) in all.
+inline double triangle_down_bend(double weight, double radius, double r2, double measure,
+                                 double limit, double h0, double h1, double o00, double o01,
+                                 double o10, double o11, double o20, double o21, double a,
+                                 double b) {
+  const double within =
+      triangle_area_within(radius, measure, h0, h1, o00, o01, o10, o11, o20, o21, a, b) *
+      (1.0 - triangle_nearest_s(r2, h0, h1, o00, o01, o10, o11, o20, o21, a, b));
+  return weight * std::min(4.0 * within / r2, limit);
+}
+
+}  // namespace convray::implicit

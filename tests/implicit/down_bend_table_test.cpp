@@ -1,0 +1,93 @@
+// The window march's vectorized downward curvature sums (implicit/down_bend_table.hpp)
+// against their scalar twin: LineCurvature::down (and down_anywhere) of each member whose
+// support meets the window, summed member after member. The same bits are expected: the
+// lanes compute the very formula (triangle_reach.hpp) and the sum keeps the members' order.
+// That the twin bounds the field's second derivative is line_curvature_test.cpp's part.
+#include "implicit/down_bend_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "implicit/convolution_surface.hpp"
+
+namespace convray::implicit {
+namespace {
+
+Vec3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> n;
+  return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+}
+
+// Primitives of every kind with positive strengths, and triangles small and large against R,
+// among them one without area (it bends nothing).
+scene::ConvolutionObject mixed_object(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto point = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  scene::ConvolutionObject o;
+  for (int i = 0; i < 3; ++i) o.points.push_back({point(), {0.7, 0.5 + 0.3 * i}});
+  o.blob_spheres.push_back({point(), {0.8, 0.9}});
+  o.blob_cylinders.push_back({point(), point(), {1.1, 0.6}});
+  o.segments.push_back({{point(), 3.0 * point()}, {0.9, 0.5}});
+  field::Arc arc;
+  if (field::arc_through(point(), point(), 2.0 * point(), arc)) o.arcs.push_back({arc, {1.2, 0.5}});
+  scene::MeshComponent small, large;
+  for (int i = 0; i < 40; ++i) {
+    const Vec3 p = point();
+    small.triangles.push_back({p, p + 0.3 * point(), p + 0.3 * point()});
+  }
+  small.triangles.push_back({Vec3(0.1), Vec3(0.2), Vec3(0.3)});  // collinear: no area
+  small.weight = {1.0, 0.4};
+  for (int i = 0; i < 5; ++i) large.triangles.push_back({3.0 * point(), 3.0 * point(), 3.0 * point()});
+  large.weight = {0.6, 0.7};
+  o.meshes.push_back(small);
+  o.meshes.push_back(large);
+  o.threshold = 0.5;
+  return o;
+}
+
+TEST(DownBendTable, SumsEqualTheScalarBoundsMemberByMember) {
+  std::mt19937_64 rng(4242);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  int windows = 0, with_members = 0;
+  for (int object = 0; object < 4; ++object) {
+    const ConvolutionSurface surface(mixed_object(rng));
+    const ConvolutionSurface::Impl& s = surface.impl();
+    for (int line = 0; line < 60; ++line) {
+      const Vec3 direction = random_unit(rng);
+      const Ray ray{Vec3(u(rng), u(rng), u(rng)) - 4.0 * direction, direction};
+      std::vector<accel::SupportInterval> members;
+      s.index->intersect(ray.origin, ray.direction, -kInfinity, kInfinity, members);
+      std::sort(members.begin(), members.end(),
+                [](const auto& a, const auto& b) { return a.enter < b.enter; });
+      std::vector<LineCurvature> bounds;
+      DownBendTable table;
+      table.clear();
+      for (const accel::SupportInterval& m : members) {
+        bounds.emplace_back(s, m.primitive, ray);
+        table.add(m.enter, m.exit, bounds.back());
+      }
+      ASSERT_EQ(table.size(), members.size());
+      for (int w = 0; w < 25; ++w) {
+        const double a = 8.0 * unit(rng), b = a + (w % 5 == 0 ? 2.0 : 0.3) * unit(rng);
+        double exact = 0.0, anywhere = 0.0;
+        for (size_t k = 0; k < members.size(); ++k) {
+          if (members[k].enter > b || members[k].exit < a) continue;
+          exact += bounds[k].down(a, b);
+          anywhere += bounds[k].down_anywhere();
+        }
+        EXPECT_EQ(table.sum(a, b, false), exact) << "object " << object << " line " << line;
+        EXPECT_EQ(table.sum(a, b, true), anywhere) << "object " << object << " line " << line;
+        EXPECT_LE(exact, anywhere * (1.0 + 1e-12));
+        ++windows;
+        if (exact > 0.0) ++with_members;
+      }
+    }
+  }
+  EXPECT_GT(with_members, windows / 4);  // the windows do meet supports
+}
+
+}  // namespace
+}  // namespace convray::implicit
