@@ -25,20 +25,22 @@ void check_vertex_count(const PolygonMesh& polygons, const std::string& file) {
                    " vertices, more than convray can index (4294967295)");
 }
 
-// `what` names the element ("face"), `where` says which (" (face 3)").
-void check_indices(std::span<const int64_t> indices, const std::string& what, const std::string& where,
+// `what` names the element ("face"), `where` says which (" (face 3)"): a function, so the text
+// is only made for an error (once per face, it was a tenth of loading a large mesh).
+template <typename Where>
+void check_indices(std::span<const int64_t> indices, const std::string& what, Where&& where,
                    size_t vertex_count, const std::string& file) {
   for (int64_t index : indices) {
     if (index < 0 || static_cast<uint64_t>(index) >= vertex_count)
       fail(file, what + " refers to vertex " + std::to_string(index) + ", but the file has " +
-                     std::to_string(vertex_count) + " vertices" + where);
+                     std::to_string(vertex_count) + " vertices" + where());
   }
 }
 
 void check_face(std::span<const int64_t> face, size_t f, size_t vertex_count, const std::string& file) {
   if (face.size() < 3)
     fail(file, "face has " + std::to_string(face.size()) + " corners; at least 3 are needed" + in_face(f));
-  check_indices(face, "face", in_face(f), vertex_count, file);
+  check_indices(face, "face", [f] { return in_face(f); }, vertex_count, file);
 }
 
 bool has_repeated_vertex(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[2] == t[0]; }
@@ -87,7 +89,7 @@ void add_segments(const PolygonMesh& polygons, LoadedMesh& mesh, const std::stri
     std::span<const int64_t> line = polygons.lines[l];
     if (line.size() < 2)
       fail(file, "line has " + std::to_string(line.size()) + " corners; at least 2 are needed" + in_line(l));
-    check_indices(line, "line", in_line(l), positions.size(), file);
+    check_indices(line, "line", [l] { return in_line(l); }, positions.size(), file);
     for (size_t k = 0; k + 1 < line.size(); ++k) {
       const auto a = static_cast<uint32_t>(line[k]), b = static_cast<uint32_t>(line[k + 1]);
       if (positions[a] == positions[b]) {
@@ -102,7 +104,8 @@ void add_segments(const PolygonMesh& polygons, LoadedMesh& mesh, const std::stri
 
 // The file's points; for a file with no faces and no lines, every vertex.
 void add_points(const PolygonMesh& polygons, LoadedMesh& mesh, const std::string& file) {
-  check_indices(polygons.points, "point", "", mesh.soup.vertices.size(), file);
+  check_indices(polygons.points, "point", [] { return std::string(); }, mesh.soup.vertices.size(),
+                file);
   mesh.points.assign(polygons.points.begin(), polygons.points.end());
   if (polygons.face_count() == 0 && polygons.lines.size() == 0 && polygons.points.empty()) {
     mesh.report.point_cloud = true;
