@@ -156,10 +156,14 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
 void span_triangles(const LineContext& line, std::vector<TriangleCandidate>& candidates) {
   thread_local std::vector<uint32_t> ids;
   thread_local TriangleSpanBatch batch;
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const auto& a, const auto& b) {
-                     return std::less<const GeometrySource*>()(a.source, b.source);
-                   });
+  const auto by_source = [](const TriangleCandidate& a, const TriangleCandidate& b) {
+    return std::less<const GeometrySource*>()(a.source, b.source);
+  };
+  // Most lines meet one mesh only: then the candidates are in order already, and a stable
+  // sort would still allocate its buffer and merge (3 % of a render of the soup).
+  if (!std::is_sorted(candidates.begin(), candidates.end(), by_source)) {
+    std::stable_sort(candidates.begin(), candidates.end(), by_source);
+  }
   for (size_t begin = 0; begin < candidates.size();) {
     const GeometrySource& source = *candidates[begin].source;
     size_t end = begin;
