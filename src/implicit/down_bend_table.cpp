@@ -4,32 +4,32 @@
 
 namespace convray::implicit {
 
-void DownBendTable::clear() {
+void DownBendTable::resize(size_t n) {
   for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &r2_, &measure_, &limit_,
                   &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_}) {
-    v->clear();
+    v->resize(n);
   }
 }
 
-void DownBendTable::add(double enter, double exit, const LineCurvature& curvature) {
+void DownBendTable::set(size_t k, double enter, double exit, const LineCurvature& curvature) {
   const LineCurvature::DownTerms t = curvature.down_terms();
-  enter_.push_back(enter);
-  exit_.push_back(exit);
-  anywhere_.push_back(t.anywhere);
-  weight_.push_back(t.weight);
-  radius_.push_back(t.radius);
-  r2_.push_back(t.r2);
-  measure_.push_back(t.measure);
-  limit_.push_back(t.limit);
-  triangle_.push_back(t.triangle ? 1.0 : 0.0);
-  h0_.push_back(t.reach.height[0]);
-  h1_.push_back(t.reach.height[1]);
-  o00_.push_back(t.reach.outside[0][0]);
-  o01_.push_back(t.reach.outside[0][1]);
-  o10_.push_back(t.reach.outside[1][0]);
-  o11_.push_back(t.reach.outside[1][1]);
-  o20_.push_back(t.reach.outside[2][0]);
-  o21_.push_back(t.reach.outside[2][1]);
+  enter_[k] = enter;
+  exit_[k] = exit;
+  anywhere_[k] = t.anywhere;
+  weight_[k] = t.weight;
+  radius_[k] = t.radius;
+  r2_[k] = t.r2;
+  measure_[k] = t.measure;
+  limit_[k] = t.limit;
+  triangle_[k] = t.triangle ? 1.0 : 0.0;
+  h0_[k] = t.reach.height[0];
+  h1_[k] = t.reach.height[1];
+  o00_[k] = t.reach.outside[0][0];
+  o01_[k] = t.reach.outside[0][1];
+  o10_[k] = t.reach.outside[1][0];
+  o11_[k] = t.reach.outside[1][1];
+  o20_[k] = t.reach.outside[2][0];
+  o21_[k] = t.reach.outside[2][1];
 }
 
 size_t DownBendTable::entered_by(double b) const {

@@ -122,10 +122,12 @@ ClusterField::ClusterField(const Impl& s, const Ray& ray,
   for (size_t k = 0; k < batches_used_; ++k) {
     batches_[k].batch.assign(s.triangles, s.frames, batches_[k].triangles);
   }
-  down_.clear();
   for (const Bending& m : members_) by_table_ = by_table_ && !m.curvature.flipped();
   if (by_table_) {
-    for (const Bending& m : members_) down_.add(m.enter, m.exit, m.curvature);
+    down_.resize(members_.size());
+    for (size_t k = 0; k < members_.size(); ++k) {
+      down_.set(k, members_[k].enter, members_[k].exit, members_[k].curvature);
+    }
   }
 }
 

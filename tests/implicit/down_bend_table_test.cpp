@@ -64,10 +64,10 @@ TEST(DownBendTable, SumsEqualTheScalarBoundsMemberByMember) {
                 [](const auto& a, const auto& b) { return a.enter < b.enter; });
       std::vector<LineCurvature> bounds;
       DownBendTable table;
-      table.clear();
-      for (const accel::SupportInterval& m : members) {
-        bounds.emplace_back(s, m.primitive, ray);
-        table.add(m.enter, m.exit, bounds.back());
+      table.resize(members.size());
+      for (size_t k = 0; k < members.size(); ++k) {
+        bounds.emplace_back(s, members[k].primitive, ray);
+        table.set(k, members[k].enter, members[k].exit, bounds.back());
       }
       ASSERT_EQ(table.size(), members.size());
       for (int w = 0; w < 25; ++w) {
