@@ -69,7 +69,8 @@ class ClusterField {
     std::vector<uint32_t> triangles;                // indices into the surface's triangles
     std::vector<double> enter, exit;                // the support along the ray
     std::vector<double> inside_enter, inside_exit;  // the whole triangle inside the ball
-    std::vector<field::LineQuartic> quartics;       // in s = t - origin_t_
+    std::vector<field::LineQuartic> quartics;       // in s = t - origin_t_, made when
+    std::vector<uint8_t> has_quartic;               // first summed (many never are)
     field::TriangleBatch batch;
     std::vector<uint32_t> lanes;
   };
@@ -144,6 +145,7 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   b.inside_enter.clear();
   b.inside_exit.clear();
   b.quartics.clear();
+  b.has_quartic.clear();
   return b;
 }
 
@@ -174,9 +176,8 @@ void ClusterField::add_triangle(Batch& b, uint32_t index, double enter, double e
   hi -= margin;
   b.inside_enter.push_back(lo);
   b.inside_exit.push_back(hi);
-  b.quartics.push_back(lo < hi ? field::triangle_line_quartic(triangle, ray_.at(origin_t_),
-                                                               ray_.direction, radius)
-                               : field::LineQuartic{});
+  b.quartics.emplace_back();
+  b.has_quartic.push_back(0);
 }
 
 template <Want kWant>
@@ -191,6 +192,12 @@ field::FieldSample ClusterField::evaluate(double t) {
     for (uint32_t lane = 0; lane < b.enter.size(); ++lane) {
       if (!(b.enter[lane] <= t && t <= b.exit[lane])) continue;
       if (kWant != Want::gradient && b.inside_enter[lane] <= t && t <= b.inside_exit[lane]) {
+        if (!b.has_quartic[lane]) {
+          b.quartics[lane] = field::triangle_line_quartic(s_.triangles[b.triangles[lane]],
+                                                          ray_.at(origin_t_), ray_.direction,
+                                                          b.group->radius);
+          b.has_quartic[lane] = 1;
+        }
         inside.add(b.quartics[lane], 1.0);
       } else {
         b.lanes.push_back(lane);
