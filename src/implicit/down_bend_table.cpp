@@ -11,8 +11,7 @@ void DownBendTable::resize(size_t n) {
   }
 }
 
-void DownBendTable::set(size_t k, double enter, double exit, const LineCurvature& curvature) {
-  const LineCurvature::DownTerms t = curvature.down_terms();
+void DownBendTable::set(size_t k, double enter, double exit, const LineCurvature::DownTerms& t) {
   enter_[k] = enter;
   exit_[k] = exit;
   anywhere_[k] = t.anywhere;

@@ -16,9 +16,9 @@ class DownBendTable {
  public:
   // Room for n members, each then set once (every term written: no fill).
   void resize(size_t n);
-  // Member k: members come in the cluster's order, by entry; `curvature` must have a positive
-  // strength (LineCurvature::flipped() false).
-  void set(size_t k, double enter, double exit, const LineCurvature& curvature);
+  // Member k: members come in the cluster's order, by entry; the terms of a primitive with a
+  // positive strength (LineCurvature::flipped() false).
+  void set(size_t k, double enter, double exit, const LineCurvature::DownTerms& terms);
   size_t size() const { return enter_.size(); }
 
   // The sum of down(a, b) over the members whose support meets [a, b]; with `anywhere`, of

@@ -102,25 +102,29 @@ LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFr
   hi_ = extent.hi;
   mean_ = extent.mean;
   var_ = extent.var;
-  // bend_down with the whole area within reach and s >= 0: its largest value.
-  down_anywhere_ = weight_ * std::min(4.0 * measure_ / r2_, limit_);
+  down_anywhere_ = triangle_down_anywhere(weight_, measure_, r2_, limit_);
 }
 
-void LineCurvature::prepare_triangle() const {
-  const field::Triangle& tri = *triangle_corners_;
-  const Ray& ray = *ray_;
+TriangleReach LineCurvature::reach_along(const field::Triangle& tri,
+                                         const field::TriangleFrame& frame, const Ray& ray) {
+  TriangleReach reach;
   const Vec3 corners[3] = {tri.a, tri.b, tri.c};
-  const Vec3& n = frame_->normal;
-  reach_.height[0] = glm::dot(n, ray.origin - tri.a);
-  reach_.height[1] = glm::dot(n, ray.direction);
+  const Vec3& n = frame.normal;
+  reach.height[0] = glm::dot(n, ray.origin - tri.a);
+  reach.height[1] = glm::dot(n, ray.direction);
   for (int k = 0; k < 3; ++k) {
     const Vec3& v = corners[k];
     // In the plane, into the triangle; unit, as n and the edge's direction are unit and
     // perpendicular.
-    const Vec3 inward = glm::cross(n, frame_->direction[k]);
-    reach_.outside[k][0] = -glm::dot(inward, ray.origin - v);
-    reach_.outside[k][1] = -glm::dot(inward, ray.direction);
+    const Vec3 inward = glm::cross(n, frame.direction[k]);
+    reach.outside[k][0] = -glm::dot(inward, ray.origin - v);
+    reach.outside[k][1] = -glm::dot(inward, ray.direction);
   }
+  return reach;
+}
+
+void LineCurvature::prepare_triangle() const {
+  reach_ = reach_along(*triangle_corners_, *frame_, *ray_);
   prepared_ = true;
 }
 
@@ -144,6 +148,19 @@ double LineCurvature::bend_down(double a, double b) const {
 LineCurvature::DownTerms LineCurvature::down_terms() const {
   if (triangle_ && !prepared_) prepare_triangle();
   return {weight_, radius_, r2_, measure_, limit_, down_anywhere_, triangle_, reach_};
+}
+
+LineCurvature::DownTerms LineCurvature::triangle_down_terms(const field::Triangle& tri,
+                                                            const field::TriangleFrame& frame,
+                                                            double strength, double radius,
+                                                            const Ray& ray) {
+  // As the constructor sets them (a triangle without a finite area has no field).
+  const double weight = std::abs(strength), r2 = radius * radius, limit = 2.0 * kPi;
+  const bool area = frame.has_area();
+  const double measure = area ? frame.area : 0.0;
+  return {weight, radius, r2, measure, limit,
+          triangle_down_anywhere(weight, measure, r2, limit), area,
+          area ? reach_along(tri, frame, ray) : TriangleReach{}};
 }
 
 }  // namespace convray::implicit

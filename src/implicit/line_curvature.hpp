@@ -75,6 +75,11 @@ class LineCurvature {
   };
   bool flipped() const { return flipped_; }
   DownTerms down_terms() const;
+  // The same for a mesh's triangle, without the rest of a LineCurvature (the march's table
+  // needs only these; `up` is rarely asked). For a positive strength.
+  static DownTerms triangle_down_terms(const field::Triangle& triangle,
+                                       const field::TriangleFrame& frame, double strength,
+                                       double radius, const Ray& ray);
 
  private:
   // The same for the skeleton's integral of K with a positive strength.
@@ -83,6 +88,12 @@ class LineCurvature {
   // The plane and edges of the triangle, along the line: made when first asked for (most
   // windows never need them).
   void prepare_triangle() const;
+  static TriangleReach reach_along(const field::Triangle& triangle,
+                                   const field::TriangleFrame& frame, const Ray& ray);
+  // bend_down's largest value: the triangle's whole area within reach, s >= 0.
+  static double triangle_down_anywhere(double weight, double measure, double r2, double limit) {
+    return weight * std::min(4.0 * measure / r2, limit);
+  }
   // A bound on the triangle's area within R of the window (triangle_reach.hpp).
   double area_within(double a, double b) const;
 

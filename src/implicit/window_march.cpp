@@ -79,14 +79,19 @@ class ClusterField {
   Batch& batch_for(const Impl::Group& group);
   void add_triangle(Batch& b, uint32_t triangle, double enter, double exit);
 
+  void make_members() const;
+
   const Impl& s_;
   const Ray& ray_;
   TraceStats& stats_;
+  std::span<const accel::SupportInterval> cluster_;
   size_t batches_used_ = 0;
   double reach_ = -kInfinity;
   double origin_t_ = 0.0;  // where the quartics' parameter s is 0
+  mutable bool members_ready_ = false;
   // Storage kept from ray to ray (a cluster is marched by one thread at a time).
-  static thread_local std::vector<Bending> members_;  // every primitive, for the curvature
+  // Every primitive's curvature, made when first needed (make_members).
+  static thread_local std::vector<Bending> members_;
   // Their downward bounds side by side (the march's usual question); unused (`by_table_`
   // false) when a member has a negative strength, whose down is its field's up.
   static thread_local DownBendTable down_;
@@ -103,33 +108,50 @@ thread_local std::vector<ClusterField::Batch> ClusterField::batches_;
 ClusterField::ClusterField(const Impl& s, const Ray& ray,
                            std::span<const accel::SupportInterval> cluster, double origin_t,
                            TraceStats& stats)
-    : s_(s), ray_(ray), stats_(stats), origin_t_(origin_t) {
-  members_.clear();
+    : s_(s), ray_(ray), stats_(stats), cluster_(cluster), origin_t_(origin_t) {
   others_.clear();
-  for (const accel::SupportInterval& iv : cluster) {
+  down_.resize(cluster.size());
+  for (size_t k = 0; k < cluster.size(); ++k) {
+    const accel::SupportInterval& iv = cluster[k];
     reach_ = std::max(reach_, iv.exit);
     if (iv.primitive < s.triangle_base) {
-      members_.push_back({iv.enter, iv.exit, LineCurvature(s, iv.primitive, ray)});
+      const LineCurvature curvature(s, iv.primitive, ray);
+      by_table_ = by_table_ && !curvature.flipped();
+      if (by_table_) down_.set(k, iv.enter, iv.exit, curvature.down_terms());
       others_.push_back({iv.enter, iv.exit, iv.primitive});
       continue;
     }
     const uint32_t triangle = iv.primitive - s.triangle_base;
     const Impl::Group& group = s.group_of(triangle);
-    members_.push_back({iv.enter, iv.exit,
-                        LineCurvature(s.triangles[triangle], s.frames[triangle], group.strength,
-                                      group.radius, ray)});
+    by_table_ = by_table_ && !(group.strength < 0.0);
+    if (by_table_) {
+      down_.set(k, iv.enter, iv.exit,
+                LineCurvature::triangle_down_terms(s.triangles[triangle], s.frames[triangle],
+                                                   group.strength, group.radius, ray));
+    }
     add_triangle(batch_for(group), triangle, iv.enter, iv.exit);
   }
   for (size_t k = 0; k < batches_used_; ++k) {
     batches_[k].batch.assign(s.triangles, s.frames, batches_[k].triangles);
   }
-  for (const Bending& m : members_) by_table_ = by_table_ && !m.curvature.flipped();
-  if (by_table_) {
-    down_.resize(members_.size());
-    for (size_t k = 0; k < members_.size(); ++k) {
-      down_.set(k, members_[k].enter, members_[k].exit, members_[k].curvature);
+}
+
+// Every member's whole LineCurvature, for the upward bounds (asked only above T, after a
+// crossing) or where a negative strength keeps the table out.
+void ClusterField::make_members() const {
+  members_.clear();
+  for (const accel::SupportInterval& iv : cluster_) {
+    if (iv.primitive < s_.triangle_base) {
+      members_.push_back({iv.enter, iv.exit, LineCurvature(s_, iv.primitive, ray_)});
+      continue;
     }
+    const uint32_t triangle = iv.primitive - s_.triangle_base;
+    const Impl::Group& group = s_.group_of(triangle);
+    members_.push_back({iv.enter, iv.exit,
+                        LineCurvature(s_.triangles[triangle], s_.frames[triangle],
+                                      group.strength, group.radius, ray_)});
   }
+  members_ready_ = true;
 }
 
 ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
@@ -233,6 +255,7 @@ Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t).gradi
 
 double ClusterField::curvature(double a, double b, bool upward, bool anywhere) const {
   if (!upward && by_table_) return down_.sum(a, b, anywhere) / s_.threshold;
+  if (!members_ready_) make_members();
   double sum = 0.0;
   for (const Bending& m : members_) {
     if (m.enter > b) break;  // the cluster is sorted by entry

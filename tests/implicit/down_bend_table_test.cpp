@@ -1,5 +1,6 @@
 // The window march's vectorized downward curvature sums (implicit/down_bend_table.hpp)
-// against their scalar twin: LineCurvature::down (and down_anywhere) of each member whose
+// (filled as the march fills it: a triangle's terms made without a LineCurvature) against
+// their scalar twin: LineCurvature::down (and down_anywhere) of each member whose
 // support meets the window, summed member after member. The same bits are expected: the
 // lanes compute the very formula (triangle_reach.hpp) and the sum keeps the members' order.
 // That the twin bounds the field's second derivative is line_curvature_test.cpp's part.
@@ -66,8 +67,16 @@ TEST(DownBendTable, SumsEqualTheScalarBoundsMemberByMember) {
       DownBendTable table;
       table.resize(members.size());
       for (size_t k = 0; k < members.size(); ++k) {
-        bounds.emplace_back(s, members[k].primitive, ray);
-        table.set(k, members[k].enter, members[k].exit, bounds.back());
+        const uint32_t id = members[k].primitive;
+        bounds.emplace_back(s, id, ray);
+        LineCurvature::DownTerms terms = bounds.back().down_terms();
+        if (id >= s.triangle_base) {  // as the march makes them, without a LineCurvature
+          const uint32_t i = id - s.triangle_base;
+          const auto& group = s.group_of(i);
+          terms = LineCurvature::triangle_down_terms(s.triangles[i], s.frames[i], group.strength,
+                                                     group.radius, ray);
+        }
+        table.set(k, members[k].enter, members[k].exit, terms);
       }
       ASSERT_EQ(table.size(), members.size());
       for (int w = 0; w < 25; ++w) {
