@@ -33,6 +33,13 @@ class TriangleBatch {
 
   size_t size() const { return weight_.size(); }
 
+  // Lane by lane, for batches whose lanes are set only when first needed (the window march's,
+  // many of whose triangles are never sampled clipped): n lanes of unspecified content, each
+  // set by set_lane before a call lists it (the listed calls read only the listed lanes).
+  void resize_unset(size_t n) { resize(n); }
+  // Lane i holds `triangle`, whose frame is `frame` (triangle_frame(triangle)).
+  void set_lane(size_t i, const Triangle& triangle, const TriangleFrame& frame);
+
   // Sum of the raw fields (strength 1) of all triangles, or of the listed ones.
   double value(const Vec3& p, double radius) const;
   FieldSample field(const Vec3& p, double radius) const;
@@ -53,7 +60,6 @@ class TriangleBatch {
   };
   struct Accumulator;
   void resize(size_t n);
-  void set_lane(size_t i, const Triangle& triangle, const TriangleFrame& frame);
   template <bool kGradient, class Index>
   void evaluate(const Vec3& p, double radius, size_t count, Index index,
                 Accumulator& acc) const;

@@ -72,6 +72,7 @@ class ClusterField {
     std::vector<field::LineQuartic> quartics;       // in s = t - origin_t_, made when
     std::vector<uint8_t> has_quartic;               // first summed (many never are)
     field::TriangleBatch batch;
+    std::vector<uint8_t> lane_set;  // batch lanes are set when first listed
     std::vector<uint32_t> lanes;
   };
   template <Want kWant>
@@ -132,7 +133,9 @@ ClusterField::ClusterField(const Impl& s, const Ray& ray,
     add_triangle(batch_for(group), triangle, iv.enter, iv.exit);
   }
   for (size_t k = 0; k < batches_used_; ++k) {
-    batches_[k].batch.assign(s.triangles, s.frames, batches_[k].triangles);
+    Batch& b = batches_[k];
+    b.batch.resize_unset(b.triangles.size());
+    b.lane_set.assign(b.triangles.size(), 0);
   }
 }
 
@@ -222,6 +225,11 @@ field::FieldSample ClusterField::evaluate(double t) {
         }
         inside.add(b.quartics[lane], 1.0);
       } else {
+        if (!b.lane_set[lane]) {  // its first sample with the triangle clipped
+          const uint32_t triangle = b.triangles[lane];
+          b.batch.set_lane(lane, s_.triangles[triangle], s_.frames[triangle]);
+          b.lane_set[lane] = 1;
+        }
         b.lanes.push_back(lane);
       }
     }
