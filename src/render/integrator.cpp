@@ -224,15 +224,17 @@ bool Integrator::may_trace(const RayState& state, double factor, double& child_w
 
 Vec3 Integrator::reflection_here(const HitPoint& hit, const RayState& state) const {
   const scene::Finish& finish = *hit.finish;
-  if (!finish.variable_reflection) return finish.reflection;
+  if (!finish.variable_reflection && finish.reflection_metallic <= 0.0) return finish.reflection;
   const double cos_incidence = -glm::dot(hit.view, hit.normal);
-  if (!finish.fresnel) return reflection_at(finish, cos_incidence, 1.0, 1.0);
-  // Fresnel's law between the medium the ray is in and the one beyond the surface.
-  const double ior_from = state.medium.ior();
-  const double ior_to = hit.entering
-                            ? (hit.surface ? hit.surface->interior.ior : 1.0)
-                            : state.medium.left(hit.surface).ior();
-  return reflection_at(finish, cos_incidence, ior_from, ior_to);
+  double ior_from = 1.0, ior_to = 1.0;
+  if (finish.fresnel) {
+    // Fresnel's law between the medium the ray is in and the one beyond the surface.
+    ior_from = state.medium.ior();
+    ior_to = hit.entering ? (hit.surface ? hit.surface->interior.ior : 1.0)
+                          : state.medium.left(hit.surface).ior();
+  }
+  const Vec3 reflection = reflection_at(finish, cos_incidence, ior_from, ior_to);
+  return metallic_reflection(finish, reflection, hit.pigment.rgb, cos_incidence);
 }
 
 Vec3 Integrator::reflected_light(const HitPoint& hit, const Vec3& reflection,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/finish.hpp"
+
 namespace convray::render {
 
 double fresnel_reflectance(double cos_incidence, double n_from, double n_to) {
@@ -23,6 +25,13 @@ Vec3 reflection_at(const scene::Finish& finish, double cos_incidence, double n_f
   const double x = finish.fresnel ? fresnel_reflectance(c, n_from, n_to)
                                   : std::pow(1.0 - c, finish.reflection_falloff);
   return finish.reflection_min + (finish.reflection - finish.reflection_min) * x;
+}
+
+Vec3 metallic_reflection(const scene::Finish& finish, const Vec3& reflection, const Vec3& pigment,
+                         double cos_incidence) {
+  if (finish.reflection_metallic <= 0.0) return reflection;
+  const double f = metallic_fresnel(cos_incidence);
+  return reflection * (Vec3(1.0) + finish.reflection_metallic * (1.0 - f) * (pigment - Vec3(1.0)));
 }
 
 }  // namespace convray::render

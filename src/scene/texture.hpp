@@ -171,6 +171,9 @@ struct Finish {
   double reflection_falloff = 1.0;
   // Filter and transmit light is scaled by 1 - reflection.
   bool conserve_energy = false;
+  // `reflection { ... metallic m }`: the reflection tinted by the pigment, less at grazing
+  // angles, as metallic highlights are (render/variable_reflection.hpp).
+  double reflection_metallic = 0.0;
   double metallic = 0.0; // 0..1: highlights (and reflection) tinted by the pigment
   // POV-Ray 3.7's `emission`: light the surface gives off itself, like ambient but not
   // multiplied by the global ambient_light.

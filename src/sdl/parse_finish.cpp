@@ -21,9 +21,7 @@ void parse_reflection_block(Parser& parser, Block& block, scene::Finish& finish)
       float_param(parser, "exponent");
       warn_once(parser, item_loc, "reflection exponent is ignored");
     } else if (accept_word(parser, "metallic")) {
-      const double metallic = at_float_start(parser) ? float_param(parser, "metallic") : 1.0;
-      finish.metallic = std::max(finish.metallic, metallic);
-      warn_once(parser, item_loc, "metallic reflection is approximated by the finish's metallic");
+      finish.reflection_metallic = at_float_start(parser) ? float_param(parser, "metallic") : 1.0;
     } else {
       block.unexpected(kWords);
     }
@@ -54,6 +52,7 @@ void parse_reflection(Parser& parser, const SourceLoc& loc, scene::Finish& finis
   Vec3 reflection = rgb_param(parser, "reflection");
   finish.variable_reflection = false;
   finish.fresnel = false;
+  finish.reflection_metallic = 0.0;
   finish.reflection_falloff = 1.0;
   // The maximum follows the minimum after a comma, or in the block form without one
   // (`reflection { 0.0 1.0 fresnel on }`), as POV-Ray reads it.

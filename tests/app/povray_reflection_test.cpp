@@ -32,6 +32,20 @@ TEST_F(PovRayReflection, VariesWithTheAngle) {
   EXPECT_GE(compare("variable_reflection", scene), 40.0);
 }
 
+TEST_F(PovRayReflection, MetallicReflectionTakesThePigmentsColour) {
+  SKIP_WITHOUT_POVRAY();
+  // `reflection { R metallic M }` tints the reflection, the finish's `metallic` does not.
+  const std::string scene =
+      kHeader +
+      "sphere { <-1.1, 0.8, 0>, 1 pigment { rgb <0.9, 0.5, 0.2> }\n"
+      "  finish { ambient 0 diffuse 0 reflection { 0.8 metallic } } }\n"
+      "sphere { <1.1, 0.8, 0>, 1 pigment { rgb <0.2, 0.9, 0.5> }\n"
+      "  finish { ambient 0 diffuse 0 reflection { 0.1, 0.9 metallic 0.5 } } }\n"
+      "sphere { <0, -0.8, 0>, 1 pigment { rgb <0.2, 0.5, 0.9> }\n"
+      "  finish { ambient 0 diffuse 0 reflection 0.8 metallic } }\n";
+  EXPECT_GE(compare("metallic_reflection", scene), 40.0);
+}
+
 TEST_F(PovRayReflection, ConserveEnergyDimsTransmittedLightByTheReflection) {
   SKIP_WITHOUT_POVRAY();
   // A perspective camera sees the transparent plane at every angle; behind it a lit checker.

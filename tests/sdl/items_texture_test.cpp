@@ -173,7 +173,8 @@ TEST(ItemsTexture, ReflectionBlockMinimumMaximumAndFresnel) {
   expect_near(finish.reflection_min, Vec3(0.1));
   EXPECT_TRUE(finish.variable_reflection);
   EXPECT_TRUE(finish.fresnel);
-  EXPECT_EQ(finish.metallic, 1.0);
+  EXPECT_EQ(finish.reflection_metallic, 1.0);
+  EXPECT_EQ(finish.metallic, 0.0);  // the finish's own metallic (highlights) is not set
 }
 
 TEST(ItemsTexture, ReflectionBlockMinimumAndMaximumWithoutAComma) {
