@@ -24,6 +24,7 @@ pictures with idiff (PSNR over 8-bit RGB). Each scene gets one status:
   within 30 dB     PSNR >= 30 dB
   differs          PSNR < 30 dB
   refused          convray exits 2 (the first line of its error is kept)
+  (a scene that renders keeps convray's first warning: what it left out or changed)
   crash            convray exits otherwise, or is killed by a signal
   timeout          convray runs past the time limit
   (POV-Ray fails, POV-Ray timeout: not counted; POV-Ray cannot render the scene either)
@@ -110,6 +111,8 @@ run_job() {
     else
       status=differs
     fi
+    # What convray said it left out or changed: its first warning.
+    [[ -n $detail ]] || detail=$(first_warning "$our_dir/$id.log")
   fi
   printf '%s\t%s\t%s\t%s\t%s\n' "$status" "$psnr" "$pov_seconds" "$our_seconds" \
     "${detail//$'\t'/ }" >"$results/$id.tsv"
@@ -122,6 +125,20 @@ first_error() {
   line=$(grep -v -e '^[[:space:]]' -e ': #debug: ' "$1" | grep -E ':[0-9]+:[0-9]+: ' | tail -n 1 || true)
   [[ -n $line ]] || line=$(grep -v -e '^[[:space:]]' -e ': #debug: ' "$1" | tail -n 1 || true)
   # Paths under the examples folder are shown relative to it.
+  echo "${line#"$examples"/}"
+}
+
+# The first warning of a scene convray rendered (unindented lines with a file:line:col,
+# #debug output left out): one about the scene's own files before one about POV-Ray's
+# include folder (whose declarations a scene mostly does not use), with how many others
+# followed; paths under the examples folder made relative.
+first_warning() {
+  local all line count
+  all=$(grep -v -e '^[[:space:]]' -e ': #debug: ' "$1" | grep -E ':[0-9]+:[0-9]+: ' || true)
+  [[ -n $all ]] || return 0
+  count=$(wc -l <<<"$all")
+  line=$(grep -m1 -v "^$includes/" <<<"$all" || head -n 1 <<<"$all")
+  ((count > 1)) && line="$line (+$((count - 1)) more)"
   echo "${line#"$examples"/}"
 }
 

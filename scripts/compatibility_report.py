@@ -101,7 +101,9 @@ def main():
         p(f"| {n} | {cell(reason)} |")
     p("")
     p("## Every scene\n")
-    p("| scene | status | PSNR (dB) | POV-Ray (s) | convray (s) | first error |")
+    p("Last column: for a refused scene the error convray stopped on; for one it rendered, "
+      "its first warning (what it ignored or approximated), empty when it warned of nothing.\n")
+    p("| scene | status | PSNR (dB) | POV-Ray (s) | convray (s) | first error or warning |")
     p("| --- | --- | ---: | ---: | ---: | --- |")
     for name, status, psnr, pov_s, our_s, detail in rows:
         p(f"| {cell(name)} | {status} | {psnr} | {pov_s} | {our_s} | {cell(detail)} |")

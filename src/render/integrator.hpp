@@ -6,7 +6,8 @@
 // At a hit, with pigment colour P (filter f, transmit t) and the normal turned to the viewer:
 //   colour = (1 - f - t) (ambient + sum of diffuse) + sum of highlights
 //          + reflection * trace(mirrored ray)
-//          + (f P + t) * trace(transmitted ray)
+//          + (f P + t) [(1 - reflection) with conserve_energy] * trace(transmitted ray)
+// where reflection may vary with the angle (variable_reflection.hpp).
 // (measured against POV-Ray 3.7: see finish.hpp). The transmitted ray bends by Snell's law
 // when the ior changes (entering a solid: its interior's ior; leaving it: the ior of the solid
 // around, 1 outside everything) and reflects when totally internally reflected.
@@ -77,7 +78,10 @@ class Integrator {
   // The fraction of light `index` that reaches the point (shadows, area lights).
   Vec3 light_visibility(size_t index, const Vec3& point, const Vec3& to_light, double distance,
                         RenderStats& stats) const;
-  Vec3 reflected_light(const HitPoint& hit, const RayState& state, RenderStats& stats) const;
+  // The finish's reflection at the hit: constant, or varying with the angle (and the iors).
+  Vec3 reflection_here(const HitPoint& hit, const RayState& state) const;
+  Vec3 reflected_light(const HitPoint& hit, const Vec3& reflection, const RayState& state,
+                       RenderStats& stats) const;
   Vec3 transmitted_light(const HitPoint& hit, const Vec3& factor, const RayState& state,
                          RenderStats& stats) const;
   // Whether a child ray of this weight factor may be traced from `state`; its weight.

@@ -162,7 +162,18 @@ struct Finish {
   double phong_size = 40.0;
   double specular = 0.0;
   double roughness = 0.05;
-  Vec3 reflection{0.0};  // constant reflection colour (`reflection r` or `reflection rgb`)
+  Vec3 reflection{0.0};  // reflection colour; with variable_reflection its maximum
+  // Variable reflection (render/variable_reflection.hpp): from reflection_min facing the
+  // viewer to reflection at grazing angles, by (1 - cos)^falloff or by Fresnel's law.
+  bool variable_reflection = false;
+  Vec3 reflection_min{0.0};
+  bool fresnel = false;
+  double reflection_falloff = 1.0;
+  // Filter and transmit light is scaled by 1 - reflection.
+  bool conserve_energy = false;
+  // `reflection { ... metallic m }`: the reflection tinted by the pigment, less at grazing
+  // angles, as metallic highlights are (render/variable_reflection.hpp).
+  double reflection_metallic = 0.0;
   double metallic = 0.0; // 0..1: highlights (and reflection) tinted by the pigment
   // POV-Ray 3.7's `emission`: light the surface gives off itself, like ambient but not
   // multiplied by the global ambient_light.

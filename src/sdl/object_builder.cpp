@@ -143,6 +143,13 @@ void ObjectBuilder::parse_clip_or_bound(bool clip) {
     object_.clipped_by.insert(object_.clipped_by.end(), objects.begin(), objects.end());
     return;
   }
+  // POV-Ray 3.7 also cuts a poly, cubic, quartic or quadric where it leaves its bound (not
+  // a sphere or a torus; measured with povray, and not as clipped_by would: hyptorus.pov).
+  if (std::holds_alternative<scene::Polynomial>(object_.shape)) {
+    warn_once(parser_, loc,
+              "bounded_by on a poly, cubic, quartic or quadric: POV-Ray also cuts away parts of "
+              "the surface outside the bound, convray only skips rays that miss the bound");
+  }
   if (objects.size() == 1) {
     object_.bounded_by = objects.front();
     return;

@@ -144,11 +144,9 @@ void parse_global_settings(Parser& parser, scene::GlobalSettings& settings) {
     const SourceLoc item_loc = take_keyword(parser);
     if (word == "assumed_gamma") {
       settings.assumed_gamma = float_param(parser, word);
+      // Rendered as POV-Ray 3.7 does (render_scene.cpp decodes the working space at the
+      // end; image maps are read into it): no warning.
       parser.note_assumed_gamma();
-      if (settings.assumed_gamma != 1.0) {
-        parser.warn(item_loc, "assumed_gamma " + number_text(settings.assumed_gamma) +
-                                  ": convray renders as POV-Ray 3.7 does with assumed_gamma 1");
-      }
     } else if (word == "max_trace_level") {
       settings.max_trace_level = int_param(parser, word);
       if (settings.max_trace_level < 1) {

@@ -8,6 +8,26 @@ namespace convray::sdl::items {
 
 namespace {
 
+// The items of `reflection { ... }` after its values.
+void parse_reflection_block(Parser& parser, Block& block, scene::Finish& finish) {
+  static constexpr std::string_view kWords[] = {"fresnel", "falloff", "exponent", "metallic"};
+  while (block.more()) {
+    const SourceLoc item_loc = parser.peek().loc;
+    if (accept_word(parser, "fresnel")) {
+      finish.fresnel = optional_bool(parser);
+    } else if (accept_word(parser, "falloff")) {
+      finish.reflection_falloff = float_param(parser, "falloff");
+    } else if (accept_word(parser, "exponent")) {
+      float_param(parser, "exponent");
+      warn_once(parser, item_loc, "reflection exponent is ignored");
+    } else if (accept_word(parser, "metallic")) {
+      finish.reflection_metallic = at_float_start(parser) ? float_param(parser, "metallic") : 1.0;
+    } else {
+      block.unexpected(kWords);
+    }
+  }
+}
+
 constexpr std::string_view kFinishWords[] = {
     "ambient",   "diffuse",    "brilliance", "phong",    "phong_size",      "specular",
     "roughness", "reflection", "metallic",   "emission", "conserve_energy", "reflection_exponent",
@@ -23,45 +43,38 @@ double parse_coefficient(Parser& parser, const std::string& word) {
 }
 
 // `reflection f`, `reflection rgb <...>`, `reflection min, max` or
-// `reflection { [min,] max [fresnel] [falloff f] [exponent f] [metallic [f]] }`: the
-// maximum colour is kept (variable reflection is not rendered).
+// `reflection { [min,] max [fresnel] [falloff f] [exponent f] [metallic [f]] }`: a minimum
+// or fresnel makes the reflection vary with the angle (render/variable_reflection.hpp).
 void parse_reflection(Parser& parser, const SourceLoc& loc, scene::Finish& finish) {
   const bool block_form = parser.at("{");
   std::optional<Block> block;
   if (block_form) block.emplace(parser, "reflection", loc);
   Vec3 reflection = rgb_param(parser, "reflection");
+  finish.variable_reflection = false;
+  finish.fresnel = false;
+  finish.reflection_metallic = 0.0;
+  finish.reflection_falloff = 1.0;
   // The maximum follows the minimum after a comma, or in the block form without one
   // (`reflection { 0.0 1.0 fresnel on }`), as POV-Ray reads it.
+  bool has_minimum = false;
   if (parser.accept(",") || (block_form && (at_float_start(parser) || parser.at("rgb")))) {
+    finish.reflection_min = reflection;
     reflection = rgb_param(parser, "reflection");
-    warn_once(parser, loc, "variable reflection: the maximum is used at every angle");
+    has_minimum = true;
   }
   finish.reflection = reflection;
-  if (!block_form) return;
-  static constexpr std::string_view kWords[] = {"fresnel", "falloff", "exponent", "metallic"};
-  while (block->more()) {
-    const SourceLoc item_loc = parser.peek().loc;
-    if (accept_word(parser, "fresnel")) {
-      optional_bool(parser);
-      warn_once(parser, item_loc, "fresnel reflection is not rendered: the reflection is constant");
-    } else if (accept_word(parser, "falloff") || accept_word(parser, "exponent")) {
-      float_param(parser, "the reflection setting");
-      warn_once(parser, item_loc, "reflection falloff and exponent are ignored");
-    } else if (accept_word(parser, "metallic")) {
-      const double metallic = at_float_start(parser) ? float_param(parser, "metallic") : 1.0;
-      finish.metallic = std::max(finish.metallic, metallic);
-      warn_once(parser, item_loc, "metallic reflection is approximated by the finish's metallic");
-    } else {
-      block->unexpected(kWords);
-    }
-  }
+  if (block_form) parse_reflection_block(parser, *block, finish);
+  // Fresnel with one value varies from 0 (measured with povray); without fresnel one value
+  // is a constant reflection.
+  if (finish.fresnel && !has_minimum) finish.reflection_min = Vec3(0.0);
+  finish.variable_reflection = has_minimum || finish.fresnel;
 }
 
 // The finish items convray parses but does not render.
 void parse_ignored_finish_item(Parser& parser, const std::string& word, const SourceLoc& loc) {
   if (word == "irid" || word == "subsurface") {
     skip_braced(parser, word, loc);
-  } else if (word == "conserve_energy" || word == "fresnel") {
+  } else if (word == "fresnel") {
     optional_bool(parser);
   } else {
     float_param(parser, word);
@@ -107,6 +120,8 @@ scene::Finish parse_finish(Parser& parser, const scene::Finish& start) {
       finish.metallic = at_float_start(parser) ? float_param(parser, word) : 1.0;
     } else if (word == "reflection") {
       parse_reflection(parser, item_loc, finish);
+    } else if (word == "conserve_energy") {
+      finish.conserve_energy = optional_bool(parser);
     } else {
       parse_ignored_finish_item(parser, word, item_loc);
     }

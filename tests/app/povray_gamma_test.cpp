@@ -53,5 +53,13 @@ TEST_F(PovRayGamma, AnAssumedGammaKeepsGammaCorrection) {
   EXPECT_EQ(povray_messages.find(kTurnedOff), std::string::npos) << povray_messages;
 }
 
+TEST_F(PovRayGamma, AnAssumedGammaOtherThanOneIsRenderedWithoutAWarning) {
+  SKIP_WITHOUT_POVRAY();
+  EXPECT_GE(compare("gamma22", std::string("#version 3.7;\nglobal_settings { assumed_gamma 2.2 }\n") +
+                                   kBody),
+            40.0);
+  EXPECT_EQ(convray_err.find("assumed_gamma"), std::string::npos) << convray_err;
+}
+
 }  // namespace
 }  // namespace convray::testing

@@ -44,6 +44,16 @@ TEST(ItemsObject, ScaleByZeroIsChangedToOneWithAWarning) {
   EXPECT_TRUE(has_warning(result, "scale by 0 along y changed to 1"));
 }
 
+TEST(ItemsObject, BoundedPolynomialWarnsThatPovRayCutsItThere) {
+  // POV-Ray 3.7 cuts a quartic (poly, cubic, quadric) by its bound, a sphere not.
+  const auto quartic = parse(
+      "quartic { <1,0,0,0,2,0,0,2,0,-10, 0,0,0,0,0,0,0,0,0,0, 1,0,0,2,0,6,0,0,0,0, 1,0,-6,0,9>\n"
+      "  bounded_by { sphere { 0, 1.6 } } }");
+  EXPECT_TRUE(has_warning(quartic, "POV-Ray also cuts away parts of the surface outside"));
+  const auto sphere = parse("sphere { 0, 2 bounded_by { sphere { 0, 1.6 } } }");
+  EXPECT_FALSE(has_warning(sphere, "cuts away"));
+}
+
 TEST(ItemsObject, SingularMatrixFails) {
   EXPECT_TRUE(fails_with("sphere { 0, 1 matrix <1,0,0, 1,0,0, 0,0,1, 0,0,0> }", 1, 15,
                          "matrix is singular"));

@@ -165,21 +165,39 @@ TEST(ItemsTexture, NormalDefaultAmountIsPovRays) {
   EXPECT_EQ(texture_of(parse("sphere { 0, 1 normal { ripples bump_size 2 } }")).normal.amount, 2.0);
 }
 
-TEST(ItemsTexture, ReflectionBlockKeepsTheMaximum) {
+TEST(ItemsTexture, ReflectionBlockMinimumMaximumAndFresnel) {
   const auto result = parse(
       "sphere { 0, 1 finish { reflection { 0.1, rgb <0.6, 0.5, 0.4> fresnel on metallic } } }");
   const scene::Finish& finish = texture_of(result).finish;
   expect_near(finish.reflection, Vec3(0.6, 0.5, 0.4));
-  EXPECT_EQ(finish.metallic, 1.0);
-  EXPECT_TRUE(has_warning(result, "fresnel reflection is not rendered"));
+  expect_near(finish.reflection_min, Vec3(0.1));
+  EXPECT_TRUE(finish.variable_reflection);
+  EXPECT_TRUE(finish.fresnel);
+  EXPECT_EQ(finish.reflection_metallic, 1.0);
+  EXPECT_EQ(finish.metallic, 0.0);  // the finish's own metallic (highlights) is not set
 }
 
 TEST(ItemsTexture, ReflectionBlockMinimumAndMaximumWithoutAComma) {
   // gamma_showcase.pov writes `reflection { 0.0 1.0 fresnel on }`; POV-Ray reads both.
-  const auto result = parse("sphere { 0, 1 finish { reflection { 0.0 1.0 fresnel on } } }");
+  const auto result = parse("sphere { 0, 1 finish { reflection { 0.2 1.0 fresnel on } } }");
   expect_near(texture_of(result).finish.reflection, Vec3(1.0));
+  expect_near(texture_of(result).finish.reflection_min, Vec3(0.2));
   const auto colours = parse("sphere { 0, 1 finish { reflection { rgb 0.1 rgb <0.5, 0.6, 0.7> } } }");
   expect_near(texture_of(colours).finish.reflection, Vec3(0.5, 0.6, 0.7));
+  EXPECT_TRUE(texture_of(colours).finish.variable_reflection);
+}
+
+TEST(ItemsTexture, ReflectionOneValueIsConstantUnlessFresnel) {
+  const scene::Finish plain = texture_of(parse(
+      "sphere { 0, 1 finish { reflection { 0.6 falloff 2 } conserve_energy } }")).finish;
+  EXPECT_FALSE(plain.variable_reflection);
+  EXPECT_EQ(plain.reflection_falloff, 2.0);
+  EXPECT_TRUE(plain.conserve_energy);
+  // POV-Ray's `reflection { 0.6 fresnel on }` goes from 0 to 0.6 (measured with povray).
+  const scene::Finish fresnel =
+      texture_of(parse("sphere { 0, 1 finish { reflection { 0.6 fresnel on } } }")).finish;
+  EXPECT_TRUE(fresnel.variable_reflection);
+  expect_near(fresnel.reflection_min, Vec3(0.0));
 }
 
 TEST(ItemsTexture, InteriorAndFade) {
