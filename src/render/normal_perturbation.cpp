@@ -4,6 +4,7 @@
 
 #include "render/noise.hpp"
 #include "render/patterns.hpp"
+#include "render/sampled_normal.hpp"
 #include "render/warps.hpp"
 
 namespace convray::render {
@@ -14,24 +15,9 @@ namespace {
 // error far below what shading can show, and stays far above rounding.
 constexpr double kGradientStep = 1e-4;
 
-// POV-Ray 3.7 tilts the normal by amount * slope * 2/15 for a pattern used as a normal
-// (measured: `normal { gradient x A }` tilts by 0.13334 A, at any scale and accuracy, and
-// twice that for marble, whose triangle wave has slope 2).
-constexpr double kPatternSlopeFactor = 2.0 / 15.0;
-
 // POV-Ray's ripples and waves normals have functions of their own, not measured yet; this
-// factor makes them about as steep as POV-Ray's.
-constexpr double kNoiseSlopeFactor = 0.5;
-
-double slope_factor(scene::Pattern pattern) {
-  switch (pattern) {
-    case scene::Pattern::ripples:
-    case scene::Pattern::waves:
-      return kNoiseSlopeFactor;
-    default:
-      return kPatternSlopeFactor;
-  }
-}
+// factor on their slope makes them about as steep as POV-Ray's.
+constexpr double kWaveSlopeFactor = 0.5;
 
 // A difference of two wrapped values taken the short way round: a ramp crossing its wrap
 // (0.99 -> 0.01) changes by 0.02, not by -0.98.
@@ -131,20 +117,13 @@ Vec3 pattern_space_gradient(const scene::PatternSpace& space, const Vec3& world_
   return g;
 }
 
-Vec3 pattern_gradient(const scene::PatternSpace& space, const Vec3& world_point) {
-  // A gradient is a covector: pattern -> world by the inverse transpose of the placement.
-  return placement_without_warps(space).normal(pattern_space_gradient(space, world_point));
-}
-
 Vec3 perturb_normal(const scene::Normal& perturbation, const Vec3& world_point,
                     const Vec3& normal) {
-  // Block patterns (checker, brick, hexagon) as normals: left out, with the parser's warning.
-  if (perturbation.space.pattern == scene::Pattern::solid || perturbation.amount == 0.0 ||
-      scene::is_block_pattern(perturbation.space.pattern)) {
-    return normal;
-  }
-  if (has_noise_normal(perturbation.space.pattern)) {
-    return noise_normal(perturbation, world_point, normal);
+  const scene::Pattern pattern = perturbation.space.pattern;
+  if (pattern == scene::Pattern::solid || perturbation.amount == 0.0) return normal;
+  if (has_noise_normal(pattern)) return noise_normal(perturbation, world_point, normal);
+  if (pattern != scene::Pattern::ripples && pattern != scene::Pattern::waves) {
+    return sampled_pattern_normal(perturbation, world_point, normal);
   }
   // The world gradient's direction with the pattern-space gradient's length: bumps as steep
   // at `scale 0.025` as at scale 1 (POV-Ray's amount does not depend on the pattern's scale).
@@ -153,8 +132,7 @@ Vec3 perturb_normal(const scene::Normal& perturbation, const Vec3& world_point,
   const double length = glm::length(g);
   if (length > 0.0) g *= glm::length(g_pattern) / length;
   const Vec3 tangential = g - glm::dot(g, normal) * normal;
-  const double strength = perturbation.amount * slope_factor(perturbation.space.pattern);
-  const Vec3 tilted = normal - strength * tangential;
+  const Vec3 tilted = normal - perturbation.amount * kWaveSlopeFactor * tangential;
   const double tilted_length = glm::length(tilted);
   return tilted_length > 0.0 && std::isfinite(tilted_length) ? tilted / tilted_length : normal;
 }

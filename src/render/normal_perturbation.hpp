@@ -1,16 +1,12 @@
 #pragma once
-// Bump mapping: `normal { bumps 0.5 }` and its kin tilt the shading normal against the slope
-// of the pattern's value. The tilt is the pattern's gradient g with its component along the
-// normal removed:
-//   n' = normalize(n - k * amount * (g - (g . n) n)),
-// g pointing along the world-space gradient but as long as the gradient in pattern space, so
-// that scaling a normal pattern changes the size of its bumps, not their steepness, and
-// k = 2/15 as measured on POV-Ray 3.7 for patterns used as normals (gradient, onion,
-// marble, ...: exact for linear stretches). bumps, dents and wrinkles are POV-Ray's own:
-// normalize(n + amount W(p)), W made of its vector noise, as the binary draws them. For
-// ripples and waves k = 1/2 gives about POV-Ray's steepness; their pictures are alike, not
-// equal. Where a wrapped pattern jumps from 1 to 0 we take the slope
-// across the jump (POV-Ray draws a thin crease there).
+// Bump mapping: `normal { bumps 0.5 }` and its kin tilt the shading normal.
+//   - bumps, dents, wrinkles and quilted are POV-Ray's own normals: normalize(n + amount W(p)),
+//     W made of its vector noise (or quilted's cubic), as the binary draws them;
+//   - ripples and waves tilt against the pattern's slope, n' = normalize(n - k amount g_t),
+//     g_t the tangential part of the gradient (as long as in pattern space), k = 1/2: about
+//     POV-Ray's steepness (its own functions for them are not matched yet);
+//   - every other pattern is sampled around the point as POV-Ray does
+//     (render/sampled_normal.hpp).
 #include "scene/texture.hpp"
 #include "util/math.hpp"
 
@@ -23,8 +19,5 @@ Vec3 perturb_normal(const scene::Normal& perturbation, const Vec3& world_point, 
 // The gradient of the pattern's value in pattern space at a world point, by central
 // differences (steps small against a pattern cell; jumps of fract-wrapped values unwrapped).
 Vec3 pattern_space_gradient(const scene::PatternSpace& space, const Vec3& world_point);
-
-// The gradient of the pattern's value in world space.
-Vec3 pattern_gradient(const scene::PatternSpace& space, const Vec3& world_point);
 
 }  // namespace convray::render

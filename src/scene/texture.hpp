@@ -183,6 +183,7 @@ struct Finish {
 struct Normal {
   PatternSpace space;      // solid: no perturbation
   double amount = 0.0;     // bump height: `bumps 0.5`
+  double accuracy = 0.02;  // patterns without a normal of their own: the sampling distance
 };
 
 struct Interior {
