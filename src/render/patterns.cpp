@@ -189,12 +189,18 @@ double pattern_value(const scene::PatternSpace& space, const Vec3& world_point) 
 }
 
 double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& pattern_point) {
-  Vec3 q = pattern_point;
-  if (space.turbulence.active() && !has_own_turbulence(space.pattern)) {
-    const scene::Turbulence& turbulence = space.turbulence;
-    q += turbulence.amount *
-         turbulence_vector(q, turbulence.octaves, turbulence.omega, turbulence.lambda);
-  }
+  return pattern_value_after_turbulence(space, turbulent_point(space, pattern_point));
+}
+
+Vec3 turbulent_point(const scene::PatternSpace& space, const Vec3& pattern_point) {
+  if (!space.turbulence.active() || has_own_turbulence(space.pattern)) return pattern_point;
+  const scene::Turbulence& turbulence = space.turbulence;
+  return pattern_point + turbulence.amount * turbulence_vector(pattern_point, turbulence.octaves,
+                                                               turbulence.omega,
+                                                               turbulence.lambda);
+}
+
+double pattern_value_after_turbulence(const scene::PatternSpace& space, const Vec3& q) {
   const double raw = raw_pattern_value(space, q);
   if (scene::is_block_pattern(space.pattern) || shapes_its_own_wave(space.pattern)) return raw;
   return shaped_by_wave(space, raw * space.frequency + space.phase);

@@ -35,6 +35,13 @@ double pattern_value(const scene::PatternSpace& space, const Vec3& world_point);
 // The same at a point already in pattern space.
 double pattern_value_in_space(const scene::PatternSpace& space, const Vec3& pattern_point);
 
+// The point moved by the pattern's plain `turbulence` modifier, as a warp innermost (marble
+// and wood, whose turbulence is their own, stay where they are).
+Vec3 turbulent_point(const scene::PatternSpace& space, const Vec3& pattern_point);
+
+// The value at a point `turbulent_point` has already moved (frequency, phase and wave applied).
+double pattern_value_after_turbulence(const scene::PatternSpace& space, const Vec3& q);
+
 // The raw function of the pattern at a pattern-space point: no turbulence, frequency or phase.
 double raw_pattern_value(const scene::PatternSpace& space, const Vec3& pattern_point);
 

@@ -27,11 +27,14 @@ const std::array<Vec3, 4>& tetrahedron_corners() {
 // -(1 / (10 a)) a (4/3) u = -(2/15) u, the tilt measured on `normal { gradient x }`.
 constexpr double kTiltPerSample = 0.1;
 
-// v = -(0.1 / accuracy) Σ value(q + accuracy u_k) u_k at the pattern-space point q.
+// v = -(0.1 / accuracy) Σ value(q + accuracy u_k) u_k at the pattern-space point q. The plain
+// turbulence moves the tetrahedron as a whole, as in POV-Ray (on a linear ramp it changes no
+// tilt); marble's and wood's own turbulence is sampled at each corner.
 Vec3 sampled_tilt(const scene::PatternSpace& space, const Vec3& q, double accuracy) {
+  const Vec3 centre = turbulent_point(space, q);
   Vec3 sum(0.0);
   for (const Vec3& u : tetrahedron_corners()) {
-    sum += pattern_value_in_space(space, q + accuracy * u) * u;
+    sum += pattern_value_after_turbulence(space, centre + accuracy * u) * u;
   }
   return -(kTiltPerSample / accuracy) * sum;
 }

@@ -53,6 +53,19 @@ TEST_F(PovRaySampledNormals, NoiseAndFunctionPatternsMatch) {
   EXPECT_GE(compare("noise_functions", bumped_spheres(normals)), 45.0) << convray_err;
 }
 
+TEST_F(PovRaySampledNormals, TurbulenceMovesTheWholeTetrahedron) {
+  SKIP_WITHOUT_POVRAY();
+  // The plain turbulence moves the sampled point once (a ramp keeps its tilt); marble's and
+  // wood's own turbulence is sampled at every corner.
+  const std::string normals[6] = {"granite 0.7 turbulence 0.2 scale 1.2",
+                                  "bozo 1 turbulence 0.5 scale 0.4",
+                                  "gradient x 2 turbulence 0.5 scale 0.3",
+                                  "marble 1 turbulence 0.8 scale 0.6",
+                                  "wood 1 turbulence 0.1 scale 0.2",
+                                  "agate 1 warp { turbulence 0.3 } scale 0.5"};
+  EXPECT_GE(compare("turbulence", bumped_spheres(normals)), 45.0) << convray_err;
+}
+
 TEST_F(PovRaySampledNormals, BlockPatternsCreaseAtTheirEdges) {
   SKIP_WITHOUT_POVRAY();
   const std::string normals[6] = {"hexagon 1.6 scale 0.124 rotate 90 * x",
