@@ -8,6 +8,7 @@
 //            shifted by half a brick along x, even ones by half a brick along z. In a cell the
 //            last `mortar` of each axis is mortar (block 0), the rest brick (block 1):
 //            mortar where fmod(x', size.x) >= size.x - mortar, and alike for y and z'.
+//            Every coordinate is first moved by 1e-10, as POV-Ray does (block_patterns.cpp).
 //   hexagon  regular hexagons of circumradius 1 in the x-z plane (any y), corners on the
 //            x axis, one centred at the origin; centre (1.5 a, sqrt(3) (b + a / 2)) has block
 //            (b - a) mod 3, so that no two neighbours share one.

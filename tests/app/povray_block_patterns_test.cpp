@@ -31,6 +31,20 @@ TEST_F(PovRayBlockPatterns, BrickAsPovRay) {
   EXPECT_GE(compare("brick", scene), 40.0) << convray_err;
 }
 
+TEST_F(PovRayBlockPatterns, BrickFacesOnAMortarBoundaryAsPovRay) {
+  SKIP_WITHOUT_POVRAY();
+  // The box's faces lie at x = ±7.5 (and y, z = ±7.5) in the pattern's space, where mortar
+  // begins: POV-Ray's 1e-10 tolerance decides for the whole face, the hit points' rounding
+  // for none of it.
+  const std::string scene =
+      kSetting +
+      "box { -1, 1 scale 0.75 texture { pigment { brick rgb 1, rgb <0.5, 0.1, 0> scale 0.1 } }\n"
+      "  rotate <-30, 30, 0> translate <-1.2, 1, 0> }\n"
+      "box { -1, 1 scale 0.75 texture { pigment { brick rgb 1, rgb <0.5, 0.1, 0> scale 0.1 } }\n"
+      "  rotate <20, -40, 0> translate <1.2, 1, 0> }\n";
+  EXPECT_GE(compare("brick_boundary", scene), 40.0) << convray_err;
+}
+
 TEST_F(PovRayBlockPatterns, HexagonAsPovRay) {
   SKIP_WITHOUT_POVRAY();
   const std::string scene =
