@@ -40,6 +40,15 @@ const std::vector<ColorMapEntry> kBozoMap = {
 const std::vector<ColorMapEntry> kRadialMap = {
     {0.0, rgb(0, 1, 1)}, {1.0 / 3.0, rgb(1, 1, 0)}, {2.0 / 3.0, rgb(1, 0, 1)}, {1.0, rgb(0, 1, 1)}};
 
+// mandel's own map, read from the povray binary (`function { pigment { mandel 1000 } }` at
+// points of every escape count k = 0..150): black up to 0.001, then cyan, yellow at 0.012,
+// magenta at 0.015, cyan from 0.1 on (the set itself, value 1, is cyan).
+const std::vector<ColorMapEntry> kMandelMap = {{0.001, rgb(0, 0, 0)},
+                                               {0.001, rgb(0, 1, 1)},
+                                               {0.012, rgb(1, 1, 0)},
+                                               {0.015, rgb(1, 0, 1)},
+                                               {0.1, rgb(0, 1, 1)}};
+
 Color block_color(const scene::Pigment& pigment, const Vec3& world_point) {
   const size_t block = size_t(pattern_value(pigment.space, world_point));
   if (block < pigment.block_colors.size()) return pigment.block_colors[block];
@@ -75,6 +84,8 @@ const std::vector<ColorMapEntry>& default_color_map(Pattern pattern) {
       return kBozoMap;
     case Pattern::radial:
       return kRadialMap;
+    case Pattern::mandel:
+      return kMandelMap;
     default:
       return kGreyRamp;
   }

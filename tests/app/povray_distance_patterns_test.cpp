@@ -49,6 +49,20 @@ TEST_F(PovRayDistancePatterns, MandelAsPovRay) {
   EXPECT_GE(compare("mandel", scene), 35.0) << convray_err;
 }
 
+TEST_F(PovRayDistancePatterns, MandelsOwnColourMapAsPovRay) {
+  SKIP_WITHOUT_POVRAY();
+  // Without a colour map mandel has a map of its own (black, cyan, yellow, magenta, cyan
+  // over the first tenth of its value).
+  const std::string scene =
+      kSetting +
+      "plane { z, 1 pigment { mandel 256 translate 0.5 * x scale 1.5 translate y }\n"
+      "  finish { ambient 1 diffuse 0 } }\n"
+      "sphere { <1.8, 1, -1>, 0.8 pigment { mandel 20 scale 0.6 translate <1.8, 1, 0> } }\n"
+      "sphere { <-1.8, 1, -1>, 0.8 pigment { mandel 1000 scale 0.8 translate <-1.5, 1, 0> }"
+      " }\n";
+  EXPECT_GE(compare("mandel_map", scene), 40.0) << convray_err;
+}
+
 TEST_F(PovRayDistancePatterns, NormalsAsPovRay) {
   SKIP_WITHOUT_POVRAY();
   const std::string scene =
