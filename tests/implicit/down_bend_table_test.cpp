@@ -13,20 +13,18 @@
 #include <vector>
 
 #include "implicit/convolution_surface.hpp"
+#include "reference/random_vectors.hpp"
 
 namespace convray::implicit {
 namespace {
 
-Vec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> n;
-  return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
-}
+using testing::random_point;
+using testing::random_unit;
 
 // Primitives of every kind with positive strengths, and triangles small and large against R,
 // among them one without area (it bends nothing).
 scene::ConvolutionObject mixed_object(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  auto point = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  auto point = [&] { return random_point(rng, 1.0); };
   scene::ConvolutionObject o;
   for (int i = 0; i < 3; ++i) o.points.push_back({point(), {0.7, 0.5 + 0.3 * i}});
   o.blob_spheres.push_back({point(), {0.8, 0.9}});
@@ -51,14 +49,14 @@ scene::ConvolutionObject mixed_object(std::mt19937_64& rng) {
 
 TEST(DownBendTable, SumsEqualTheScalarBoundsMemberByMember) {
   std::mt19937_64 rng(4242);
-  std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
   int windows = 0, with_members = 0;
   for (int object = 0; object < 4; ++object) {
     const ConvolutionSurface surface(mixed_object(rng));
     const ConvolutionSurface::Impl& s = surface.impl();
     for (int line = 0; line < 60; ++line) {
       const Vec3 direction = random_unit(rng);
-      const Ray ray{Vec3(u(rng), u(rng), u(rng)) - 4.0 * direction, direction};
+      const Ray ray{random_point(rng, 1.0) - 4.0 * direction, direction};
       std::vector<accel::SupportInterval> members;
       s.index->intersect(ray.origin, ray.direction, -kInfinity, kInfinity, members);
       std::sort(members.begin(), members.end(),
