@@ -18,8 +18,16 @@ scene::Normal parse_normal(Parser& parser, const scene::Normal& start) {
   if (auto declared = accept_declared<scene::Normal>(parser, "a normal")) normal = *declared;
   static constexpr std::string_view kOwn[] = {"bump_size", "accuracy"};
   while (block.more()) {
+    const SourceLoc pattern_loc = parser.peek().loc;
     if (parse_pattern_keyword(parser, normal.space)) {
       normal.amount = kDefaultBumpAmount;
+      // Their own bump functions in POV-Ray are not matched yet (normal_perturbation.cpp).
+      if (normal.space.pattern == scene::Pattern::ripples ||
+          normal.space.pattern == scene::Pattern::waves) {
+        warn_once(parser, pattern_loc,
+                  "ripples and waves as normals are approximated by convray: their slope is "
+                  "not POV-Ray's own bump function");
+      }
       // The amount may follow after a comma: `gradient x, 0.5`.
       if (parser.accept(",") || at_float_start(parser)) {
         normal.amount = float_param(parser, "the bump amount");

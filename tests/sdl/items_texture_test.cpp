@@ -36,6 +36,16 @@ TEST(ItemsTexture, FullTexture) {
   expect_near(texture.normal.space.transform.point(Vec3(1, 1, 1)), Vec3(0.1));
 }
 
+TEST(ItemsTexture, RipplesAndWavesNormalsWarnThatTheyAreApproximated) {
+  // Their bump functions are POV-Ray's own (not the pattern's slope), not matched yet.
+  for (const char* pattern : {"ripples", "waves"}) {
+    const auto result = parse(std::string("sphere { 0, 1 normal { ") + pattern + " 0.6 } }");
+    EXPECT_TRUE(has_warning(result, "ripples and waves as normals are approximated")) << pattern;
+  }
+  const auto pigment = parse("sphere { 0, 1 pigment { ripples } normal { bumps 0.5 } }");
+  EXPECT_FALSE(has_warning(pigment, "approximated"));
+}
+
 TEST(ItemsTexture, UnsetFinishValuesArePovRayDefaults) {
   const scene::Finish& finish = texture_of(parse("sphere { 0, 1 finish { phong 1 } }")).finish;
   expect_near(finish.ambient, Vec3(0.1));
