@@ -39,7 +39,9 @@ scene::ConvolutionObject mixed_object(std::mt19937_64& rng) {
   }
   small.triangles.push_back({Vec3(0.1), Vec3(0.2), Vec3(0.3)});  // collinear: no area
   small.weight = {1.0, 0.4};
-  for (int i = 0; i < 5; ++i) large.triangles.push_back({3.0 * point(), 3.0 * point(), 3.0 * point()});
+  for (int i = 0; i < 5; ++i) {
+    large.triangles.push_back({3.0 * point(), 3.0 * point(), 3.0 * point()});
+  }
   large.weight = {0.6, 0.7};
   o.meshes.push_back(small);
   o.meshes.push_back(large);
