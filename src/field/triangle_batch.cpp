@@ -28,12 +28,6 @@ void TriangleBatch::assign(std::span<const Triangle> triangles) {
   for (size_t i = 0; i < triangles.size(); ++i) set_lane(i, triangles[i], triangle_frame(triangles[i]));
 }
 
-void TriangleBatch::assign(std::span<const Triangle> triangles,
-                           std::span<const TriangleFrame> frames, std::span<const uint32_t> ids) {
-  resize(ids.size());
-  for (size_t i = 0; i < ids.size(); ++i) set_lane(i, triangles[ids[i]], frames[ids[i]]);
-}
-
 // Every lane is then written whole by set_lane: no fill first (the batches of the window
 // march are reassigned for every ray, and filling 34 arrays was 2 % of a render).
 void TriangleBatch::resize(size_t n) {

@@ -26,10 +26,6 @@ class TriangleBatch {
   TriangleBatch(std::span<const Triangle> triangles, std::span<const double> weights);
   // Replaces the triangles, reusing the arrays' storage (for small batches built per query).
   void assign(std::span<const Triangle> triangles);
-  // The same for triangles[ids[k]], from their frames computed once per mesh (frames[i] that
-  // of triangles[i]): the same lanes, bit for bit, without a square root or division per ray.
-  void assign(std::span<const Triangle> triangles, std::span<const TriangleFrame> frames,
-              std::span<const uint32_t> ids);
 
   size_t size() const { return weight_.size(); }
 
@@ -37,7 +33,9 @@ class TriangleBatch {
   // many of whose triangles are never sampled clipped): n lanes of unspecified content, each
   // set by set_lane before a call lists it (the listed calls read only the listed lanes).
   void resize_unset(size_t n) { resize(n); }
-  // Lane i holds `triangle`, whose frame is `frame` (triangle_frame(triangle)).
+  // Lane i holds `triangle`, whose frame is `frame` (triangle_frame(triangle), computed once
+  // per mesh): the same lane, bit for bit, as assign() makes, without a square root or
+  // division per ray.
   void set_lane(size_t i, const Triangle& triangle, const TriangleFrame& frame);
 
   // Sum of the raw fields (strength 1) of all triangles, or of the listed ones.

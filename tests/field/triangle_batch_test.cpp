@@ -112,9 +112,9 @@ TEST(TriangleBatch, FarPointsGiveExactlyZero) {
   EXPECT_EQ(f.gradient, Vec3(0.0));
 }
 
-// The per-ray batches of the window march are assigned from frames computed once per mesh
-// (triangle_frame.hpp) and a list of indices: the same lanes, bit for bit, as a batch made from
-// the same triangles' corners, zero-area ones included.
+// The per-ray batches of the window march are set lane by lane, in any order, from frames
+// computed once per mesh (triangle_frame.hpp): the same lanes, bit for bit, as a batch made
+// from the same triangles' corners, zero-area ones included.
 TEST(TriangleBatch, AssignedFromFramesEqualsAssignedFromCorners) {
   std::mt19937_64 rng(28);
   const auto tris = random_triangles(rng, 80, 0.5);
@@ -128,7 +128,10 @@ TEST(TriangleBatch, AssignedFromFramesEqualsAssignedFromCorners) {
     picked.push_back(tris[i]);
   }
   TriangleBatch from_frames;
-  from_frames.assign(tris, frames, ids);
+  from_frames.resize_unset(ids.size());
+  for (size_t lane = ids.size(); lane-- > 0;) {  // last first, as a march may meet them
+    from_frames.set_lane(lane, tris[ids[lane]], frames[ids[lane]]);
+  }
   const TriangleBatch from_corners(picked);
   std::uniform_real_distribution<double> u(-1.2, 1.2);
   for (int k = 0; k < 200; ++k) {
