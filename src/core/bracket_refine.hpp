@@ -27,6 +27,12 @@
 // and the steps after that point would only move every vertex within the tolerance. The
 // points evaluated are the same as without it up to the stop, so it never costs evaluations;
 // 0 (the default) stops only on an exact zero, as the tracers want.
+//
+// `close_bracket` false: once a step falls below the resolution, return that step's point
+// without evaluating it (the bracket is left open by at most the step, a fraction of the
+// resolution). For a caller that evaluates the root anyway, value and gradient: the window
+// march's first hit, whose normal needs the gradient there, spends that evaluation on a last
+// Newton step instead of on the evaluation that closes the bracket.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -37,7 +43,8 @@ template <class Function>
 double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&& g,
                       double guess = std::numeric_limits<double>::quiet_NaN(),
                       double guess_slope = std::numeric_limits<double>::quiet_NaN(),
-                      double tolerance = 0.0, double residual = 0.0) {
+                      double tolerance = 0.0, double residual = 0.0,
+                      bool close_bracket = true) {
   const bool lo_negative = g_lo < 0.0;
   double t = guess > lo && guess < hi ? guess : (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
   double last_t = 0.0, last_g = 0.0;  // the previous point evaluated, for the secant
@@ -70,6 +77,7 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
     const double step = std::abs(next - t);
     slow = step > 0.5 * previous_step ? slow + 1 : 0;
     if (step < 0.5 * resolution) {
+      if (!close_bracket) return std::clamp(next, lo, hi);
       // Converged to within the resolution: close the bracket on the root's side of t (a
       // point always inside it, since it is wider than the resolution).
       next = root_above ? t + 0.5 * resolution : t - 0.5 * resolution;

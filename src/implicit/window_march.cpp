@@ -48,7 +48,8 @@ class ClusterField {
                double origin_t, TraceStats& stats);
 
   double value_minus_threshold(double t);  // F / T - 1
-  Vec3 gradient(double t);
+  field::FieldSample sample(double t);     // F and its gradient
+  const Ray& ray() const { return ray_; }
   // The sum of how far the primitives whose support meets [a, b] may bend up there (or down:
   // `upward` false), in units of T. `anywhere`: each primitive's bound over its whole line
   // where it has a cheap one (LineCurvature::down_anywhere), larger but quick to sum.
@@ -259,7 +260,7 @@ double ClusterField::value_minus_threshold(double t) {
   return evaluate<Want::value>(t).value / s_.threshold - 1.0;
 }
 
-Vec3 ClusterField::gradient(double t) { return evaluate<Want::gradient>(t).gradient; }
+field::FieldSample ClusterField::sample(double t) { return evaluate<Want::gradient>(t); }
 
 double ClusterField::curvature(double a, double b, bool upward, bool anywhere) const {
   if (!upward && by_table_) return down_.sum(a, b, anywhere) / s_.threshold;
@@ -330,18 +331,24 @@ Guess quadratic_root(const Value& a, const Value& b, const Value& c) {
 
 class Marcher {
  public:
-  Marcher(const Impl& s, ClusterField& field, RootMode mode, std::vector<double>& out,
-          TraceStats& stats)
-      : s_(s), field_(field), mode_(mode), out_(out), stats_(stats) {}
+  // `want_gradient`: the first root's gradient is wanted (the hit's normal); see root_gradient.
+  Marcher(const Impl& s, ClusterField& field, RootMode mode, bool want_gradient,
+          std::vector<double>& out, TraceStats& stats)
+      : s_(s), field_(field), mode_(mode), want_gradient_(want_gradient), out_(out),
+        stats_(stats) {}
 
   // Whether the search is over (a root found where one is enough). `at_cluster_entry`: `from`
   // is where the ray enters the cluster's first support.
   bool march(double from, double to, bool at_cluster_entry);
   double last_root() const { return last_root_; }
+  // The exact gradient at the last root, where its polish evaluated it (RootMode::first with
+  // `want_gradient`): within the root tolerance of last_root().
+  const std::optional<Vec3>& root_gradient() const { return root_gradient_; }
 
  private:
   Value value(double t) { return {t, field_.value_minus_threshold(t)}; }
   bool bracket(const Value& a, const Value& b, const Value* third = nullptr);
+  double polish_with_gradient(const Value& a, const Value& b, double t, double tolerance);
   bool search_window(const Value& a, const Value& b);
   // How far F may bend away from its chord towards T over [a, b] (a on the side of `g`);
   // `quick`: a larger bound that costs less (ClusterField::curvature's `anywhere`), which
@@ -355,9 +362,11 @@ class Marcher {
   const Impl& s_;
   ClusterField& field_;
   RootMode mode_;
+  bool want_gradient_;
   std::vector<double>& out_;
   TraceStats& stats_;
   double last_root_ = kInfinity;
+  std::optional<Vec3> root_gradient_;
 };
 
 // A sign change between a and b: its root, refined on the exact field (for RootMode::any a
@@ -368,13 +377,37 @@ bool Marcher::bracket(const Value& a, const Value& b, const Value* third) {
     ++stats_.roots;
     Guess guess{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
     if (third) guess = quadratic_root(a, b, *third);
+    const double tolerance = kRootTolerance * s_.min_radius;
+    // A first hit's normal evaluates the gradient at the root anyway: the refiner leaves its
+    // last point unevaluated, and that evaluation closes the root instead.
+    const bool with_gradient = mode_ == RootMode::first && want_gradient_;
     t = refine_bracket(a.t, b.t, a.g, b.g,
                        [&](double x) { return field_.value_minus_threshold(x); }, guess.t,
-                       guess.slope, kRootTolerance * s_.min_radius);
+                       guess.slope, tolerance, 0.0, !with_gradient);
+    if (with_gradient) t = polish_with_gradient(a, b, t, tolerance);
   }
   if (out_.empty() || t > out_.back() + 1e-9 * s_.min_radius) out_.push_back(t);
   last_root_ = t;
   return mode_ != RootMode::all;
+}
+
+// t: the refiner's converged point, left unevaluated. One evaluation with the gradient gives
+// the normal and a last Newton step, whose error is of the order of the square of the
+// refiner's last step. A Newton step longer than the tolerance (not expected: the refiner's
+// last step was shorter) means t was not as close as it looked: the bracket is then closed
+// as the refiner always does, and the normal evaluated at its root afterwards.
+double Marcher::polish_with_gradient(const Value& a, const Value& b, double t, double tolerance) {
+  const field::FieldSample at = field_.sample(t);
+  const double slope = glm::dot(at.gradient, field_.ray().direction) / s_.threshold;
+  const double step = (at.value / s_.threshold - 1.0) / slope;
+  if (std::abs(step) <= tolerance && t - step > a.t && t - step < b.t) {
+    root_gradient_ = at.gradient;
+    return t - step;
+  }
+  root_gradient_.reset();
+  return refine_bracket(a.t, b.t, a.g, b.g,
+                        [&](double x) { return field_.value_minus_threshold(x); }, t,
+                        std::numeric_limits<double>::quiet_NaN(), tolerance);
 }
 
 // a and b on the same side of T: halve until the chord bound excludes a crossing pair, or
@@ -448,10 +481,11 @@ void march_cluster(const Impl& surface, const Ray& ray,
   ClusterField field(surface, ray, cluster, from, stats);
   const double to = std::min(tmax, field.reach());
   if (!(from < to)) return;
-  Marcher marcher(surface, field, mode, out, stats);
+  Marcher marcher(surface, field, mode, first_gradient != nullptr, out, stats);
   if (marcher.march(from, to, from == cluster.front().enter) && mode == RootMode::first &&
       first_gradient) {
-    *first_gradient = field.gradient(marcher.last_root());
+    *first_gradient = marcher.root_gradient() ? *marcher.root_gradient()
+                                              : field.sample(marcher.last_root()).gradient;
   }
 }
 

@@ -114,6 +114,35 @@ TEST(BracketRefine, AGoodGuessWithItsSlopeConvergesInAFewEvaluations) {
   }
 }
 
+// Left open (`close_bracket` false, for a caller that evaluates the root itself): on a smooth
+// simple root the point returned is within the tolerance of the exact root, it was not
+// evaluated (the caller's evaluation replaces the one that closes the bracket), and the
+// refiner took one evaluation fewer than with the bracket closed.
+TEST(BracketRefine, LeftOpenItReturnsItsLastStepUnevaluatedWithinTheTolerance) {
+  for (const Case& c : cases()) {
+    if (c.name == "triple root" || c.name == "jump" || c.name == "flat then steep") continue;
+    for (double tolerance : {1e-10, 1e-7}) {
+      const std::string what = c.name + " tolerance " + std::to_string(tolerance);
+      int closed_evaluations = 0, open_evaluations = 0;
+      double last_open = std::nan("");
+      const double closed = refine_bracket(
+          c.lo, c.hi, c.g(c.lo), c.g(c.hi),
+          [&](double x) { ++closed_evaluations; return c.g(x); }, std::nan(""), std::nan(""),
+          tolerance);
+      const double open = refine_bracket(
+          c.lo, c.hi, c.g(c.lo), c.g(c.hi),
+          [&](double x) { ++open_evaluations; last_open = x; return c.g(x); }, std::nan(""),
+          std::nan(""), tolerance, 0.0, false);
+      EXPECT_NEAR(open, c.root, tolerance) << what;
+      EXPECT_NEAR(closed, c.root, tolerance) << what;
+      EXPECT_GE(open, c.lo) << what;
+      EXPECT_LE(open, c.hi) << what;
+      EXPECT_LE(open_evaluations, closed_evaluations) << what;
+      if (open != last_open) EXPECT_EQ(open_evaluations + 1, closed_evaluations) << what;
+    }
+  }
+}
+
 // A residual stop (the polygonizer's |F - T| <= tolerance * T) ends at the first point where
 // |g| is within it: that point itself, inside the bracket, after no more evaluations than the
 // refiner takes to a few ulps, and (for a simple root) within residual / |g'| of the exact
