@@ -4,14 +4,16 @@
 
 namespace convray::implicit {
 
-void DownBendTable::resize(size_t n) {
+void DownBendTable::reset(size_t n) {
+  size_ = 0;
   for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &r2_, &measure_, &limit_,
                   &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_}) {
     v->resize(n);
   }
 }
 
-void DownBendTable::set(size_t k, double enter, double exit, const LineCurvature::DownTerms& t) {
+void DownBendTable::add(double enter, double exit, const LineCurvature::DownTerms& t) {
+  const size_t k = size_++;
   enter_[k] = enter;
   exit_[k] = exit;
   anywhere_[k] = t.anywhere;
@@ -32,7 +34,7 @@ void DownBendTable::set(size_t k, double enter, double exit, const LineCurvature
 }
 
 size_t DownBendTable::entered_by(double b) const {
-  return size_t(std::upper_bound(enter_.begin(), enter_.end(), b) - enter_.begin());
+  return size_t(std::upper_bound(enter_.begin(), enter_.begin() + size_, b) - enter_.begin());
 }
 
 double DownBendTable::sum(double a, double b, bool anywhere) const {

@@ -14,21 +14,24 @@ namespace convray::implicit {
 
 class DownBendTable {
  public:
-  // Room for n members, each then set once (every term written: no fill).
-  void resize(size_t n);
-  // Member k: members come in the cluster's order, by entry; the terms of a primitive with a
-  // positive strength (LineCurvature::flipped() false).
-  void set(size_t k, double enter, double exit, const LineCurvature::DownTerms& terms);
-  size_t size() const { return enter_.size(); }
+  // Room for n members, none held yet (the arrays are sized once, never filled).
+  void reset(size_t n);
+  // The next member, in the cluster's order (by entry): the terms of a primitive with a
+  // positive strength (LineCurvature::flipped() false). At most n after reset(n).
+  void add(double enter, double exit, const LineCurvature::DownTerms& terms);
+  size_t size() const { return size_; }
 
   // The sum of down(a, b) over the members whose support meets [a, b]; with `anywhere`, of
-  // each one's bound over its whole line (LineCurvature::down_anywhere) instead.
+  // each one's bound over its whole line (LineCurvature::down_anywhere) instead. Every member
+  // that enters by b must be held (the march adds members as its windows reach their entry);
+  // later ones may be missing.
   double sum(double a, double b, bool anywhere) const;
 
  private:
   // How many members enter at or before b (they are sorted by entry).
   size_t entered_by(double b) const;
 
+  size_t size_ = 0;
   std::vector<double> enter_, exit_, anywhere_;
   // The terms of triangle_down_bend; a member that is not a triangle has triangle_ 0 and
   // bends by its `anywhere_` on any window.

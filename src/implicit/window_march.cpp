@@ -53,7 +53,7 @@ class ClusterField {
   // The sum of how far the primitives whose support meets [a, b] may bend up there (or down:
   // `upward` false), in units of T. `anywhere`: each primitive's bound over its whole line
   // where it has a cheap one (LineCurvature::down_anywhere), larger but quick to sum.
-  double curvature(double a, double b, bool upward, bool anywhere = false) const;
+  double curvature(double a, double b, bool upward, bool anywhere = false);
   double reach() const { return reach_; }
 
  private:
@@ -78,6 +78,11 @@ class ClusterField {
   };
   template <Want kWant>
   field::FieldSample evaluate(double t);
+  // Members are made ready in the cluster's order as the march reaches their entry: a first
+  // hit ends the march long before the last members of a deep cluster (at R = 5, half of
+  // them), whose set-up (curvature terms, batch lanes, inside chords) is then never paid.
+  void add_members_entered_by(double t);
+  void add_member(const accel::SupportInterval& iv);
   Batch& batch_for(const Impl::Group& group);
   void add_triangle(Batch& b, uint32_t triangle, double enter, double exit);
 
@@ -87,6 +92,7 @@ class ClusterField {
   const Ray& ray_;
   TraceStats& stats_;
   std::span<const accel::SupportInterval> cluster_;
+  size_t members_added_ = 0;  // cluster_[0, members_added_) are in the batches and the table
   size_t batches_used_ = 0;
   double reach_ = -kInfinity;
   double origin_t_ = 0.0;  // where the quartics' parameter s is 0
@@ -112,32 +118,35 @@ ClusterField::ClusterField(const Impl& s, const Ray& ray,
                            TraceStats& stats)
     : s_(s), ray_(ray), stats_(stats), cluster_(cluster), origin_t_(origin_t) {
   others_.clear();
-  down_.resize(cluster.size());
-  for (size_t k = 0; k < cluster.size(); ++k) {
-    const accel::SupportInterval& iv = cluster[k];
-    reach_ = std::max(reach_, iv.exit);
-    if (iv.primitive < s.triangle_base) {
-      const LineCurvature curvature(s, iv.primitive, ray);
-      by_table_ = by_table_ && !curvature.flipped();
-      if (by_table_) down_.set(k, iv.enter, iv.exit, curvature.down_terms());
-      others_.push_back({iv.enter, iv.exit, iv.primitive});
-      continue;
-    }
-    const uint32_t triangle = iv.primitive - s.triangle_base;
-    const Impl::Group& group = s.group_of(triangle);
-    by_table_ = by_table_ && !(group.strength < 0.0);
-    if (by_table_) {
-      down_.set(k, iv.enter, iv.exit,
-                LineCurvature::triangle_down_terms(s.triangles[triangle], s.frames[triangle],
-                                                   group.strength, group.radius, ray));
-    }
-    add_triangle(batch_for(group), triangle, iv.enter, iv.exit);
+  down_.reset(cluster.size());
+  for (const accel::SupportInterval& iv : cluster) reach_ = std::max(reach_, iv.exit);
+}
+
+void ClusterField::add_members_entered_by(double t) {
+  while (members_added_ < cluster_.size() && cluster_[members_added_].enter <= t) {
+    add_member(cluster_[members_added_++]);
   }
-  for (size_t k = 0; k < batches_used_; ++k) {
-    Batch& b = batches_[k];
-    b.batch.resize_unset(b.triangles.size());
-    b.lane_set.assign(b.triangles.size(), 0);
+}
+
+// A member with a negative strength keeps the table out from then on (its down is its
+// field's up); the table's sums only ever involve members added before it.
+void ClusterField::add_member(const accel::SupportInterval& iv) {
+  if (iv.primitive < s_.triangle_base) {
+    const LineCurvature curvature(s_, iv.primitive, ray_);
+    by_table_ = by_table_ && !curvature.flipped();
+    if (by_table_) down_.add(iv.enter, iv.exit, curvature.down_terms());
+    others_.push_back({iv.enter, iv.exit, iv.primitive});
+    return;
   }
+  const uint32_t triangle = iv.primitive - s_.triangle_base;
+  const Impl::Group& group = s_.group_of(triangle);
+  by_table_ = by_table_ && !(group.strength < 0.0);
+  if (by_table_) {
+    down_.add(iv.enter, iv.exit,
+              LineCurvature::triangle_down_terms(s_.triangles[triangle], s_.frames[triangle],
+                                                 group.strength, group.radius, ray_));
+  }
+  add_triangle(batch_for(group), triangle, iv.enter, iv.exit);
 }
 
 // Every member's whole LineCurvature, for the upward bounds (asked only above T, after a
@@ -172,6 +181,9 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   b.inside_exit.clear();
   b.quartics.clear();
   b.has_quartic.clear();
+  b.lane_set.clear();
+  // Lanes for as many members as the cluster has (most clusters meet one mesh): sized once.
+  b.batch.resize_unset(cluster_.size());
   return b;
 }
 
@@ -204,10 +216,12 @@ void ClusterField::add_triangle(Batch& b, uint32_t index, double enter, double e
   b.inside_exit.push_back(hi);
   b.quartics.emplace_back();
   b.has_quartic.push_back(0);
+  b.lane_set.push_back(0);
 }
 
 template <Want kWant>
 field::FieldSample ClusterField::evaluate(double t) {
+  add_members_entered_by(t);
   const Vec3 p = ray_.at(t);
   field::FieldSample sum;
   const double s = t - origin_t_;
@@ -262,7 +276,8 @@ double ClusterField::value_minus_threshold(double t) {
 
 field::FieldSample ClusterField::sample(double t) { return evaluate<Want::gradient>(t); }
 
-double ClusterField::curvature(double a, double b, bool upward, bool anywhere) const {
+double ClusterField::curvature(double a, double b, bool upward, bool anywhere) {
+  add_members_entered_by(b);
   if (!upward && by_table_) return down_.sum(a, b, anywhere) / s_.threshold;
   if (!members_ready_) make_members();
   double sum = 0.0;
