@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <new>
 #include <vector>
 
 #include "mesh/load_error.hpp"
@@ -41,8 +42,9 @@ bool starts_gzip_member(std::string_view bytes) {
                  "refusing what looks like a decompression bomb");
 }
 
-// Inflates every member of `compressed` a chunk at a time, handing each chunk to `sink`;
-// returns the bytes inflated. Stops with the bomb error past `limit`.
+// Inflates every member of `compressed` a chunk at a time, handing each chunk to `sink`
+// (which returns false to stop early); returns the bytes inflated. Stops with the bomb error
+// past `limit`.
 template <typename Sink>
 uint64_t inflate_all(std::string_view compressed, const std::string& file, uint64_t limit,
                      Sink&& sink) {
@@ -63,7 +65,7 @@ uint64_t inflate_all(std::string_view compressed, const std::string& file, uint6
     total += produced;
     input.remove_prefix(feed - stream.avail_in);
     if (total > limit) fail_too_big(file, limit);
-    sink(chunk.data(), produced);
+    if (!sink(chunk.data(), produced)) return total;
     if (status == Z_STREAM_END) {
       if (!starts_gzip_member(input)) return total;  // done; trailing bytes ignored
       inflateReset(&stream);                          // another member follows
@@ -84,18 +86,59 @@ uint64_t inflated_size_limit(uint64_t compressed_size) {
   return std::min(kMaxInflatedBytes, std::max(kMinInflatedLimit, by_ratio));
 }
 
-// Two passes: the first only counts, so a bomb is refused without holding any of it and a
-// good file gets one allocation of its exact size. A buffer grown by doubling held up to
-// three times the output during its last copy and ran out of memory on issue 17's 20 GB of
-// zeros before the limit refused them; inflating twice costs far less than parsing.
+namespace {
+
+// The size the gzip trailer states: ISIZE, the last member's length modulo 2^32, in the
+// last four bytes (little-endian). Only a hint: earlier members, bytes after the last one, a
+// file over 4 GiB or a forged trailer make it wrong.
+uint64_t stated_size(std::string_view compressed) {
+  if (compressed.size() < 18) return 0;  // a 10-byte header and an 8-byte trailer at least
+  uint64_t size = 0;
+  for (int k = 0; k < 4; ++k) {
+    size |= uint64_t(static_cast<unsigned char>(compressed[compressed.size() - 4 + k])) << (8 * k);
+  }
+  return size;
+}
+
+// One pass into a buffer of the stated size where that size is right (every file gzip(1)
+// wrote in one go): the buffer is never grown past it. Returns false where the output
+// outgrows it (several members, a wrong trailer) or the buffer cannot be had.
+bool inflate_as_stated(std::string_view compressed, const std::string& file, uint64_t limit,
+                       std::vector<char>& output) {
+  const uint64_t stated = stated_size(compressed);
+  if (stated == 0 || stated > limit) return false;
+  try {
+    output.reserve(static_cast<size_t>(stated));
+  } catch (const std::bad_alloc&) {
+    return false;  // a forged size: the counting pass finds the real one
+  }
+  bool fits = true;
+  inflate_all(compressed, file, limit, [&](const char* data, size_t n) {
+    fits = output.size() + n <= stated;
+    if (fits) output.insert(output.end(), data, data + n);
+    return fits;
+  });
+  if (!fits) std::vector<char>().swap(output);
+  return fits;
+}
+
+}  // namespace
+
+// Where the trailer's size is wrong, two passes: the first only counts, so a bomb is refused
+// without holding any of it and a good file gets one allocation of its exact size. A buffer
+// grown by doubling held up to three times the output during its last copy and ran out of
+// memory on issue 17's 20 GB of zeros before the limit refused them.
 std::vector<char> gunzip(std::string_view compressed, const std::string& file) {
   if (!starts_gzip_member(compressed)) fail(file, "gzip: not gzip data (the file does not start with 1f 8b)");
   const uint64_t limit = inflated_size_limit(compressed.size());
-  const uint64_t size = inflate_all(compressed, file, limit, [](const char*, size_t) {});
   std::vector<char> output;
+  if (inflate_as_stated(compressed, file, limit, output)) return output;
+  const uint64_t size = inflate_all(compressed, file, limit, [](const char*, size_t) { return true; });
   output.reserve(static_cast<size_t>(size));
-  inflate_all(compressed, file, limit,
-              [&](const char* data, size_t n) { output.insert(output.end(), data, data + n); });
+  inflate_all(compressed, file, limit, [&](const char* data, size_t n) {
+    output.insert(output.end(), data, data + n);
+    return true;
+  });
   return output;
 }
 

@@ -20,8 +20,9 @@ uint64_t inflated_size_limit(uint64_t compressed_size);
 // Decompresses gzip data (one member or several back to back; bytes after the last member
 // are ignored, as gzip(1) ignores them). Throws InputError named after `file` for corrupt
 // or truncated data and for output beyond inflated_size_limit().
-// The output is counted before it is kept: a bomb is refused before any of it is held, and
-// the result is one allocation of its exact size.
+// The output goes into one allocation, never grown: of the size the gzip trailer states where
+// that size is right (one pass), else of the size a first, counting pass finds; either way a
+// bomb is refused before more than the limit is held.
 std::vector<char> gunzip(std::string_view compressed, const std::string& file);
 
 }  // namespace convray::mesh

@@ -287,6 +287,18 @@ TEST(LoadErrors, CorruptedGzip) {
   EXPECT_EQ(error_loading(bytes, "tri.off.gz"), "tri.off.gz: gzip: corrupt data (incorrect data check)");
 }
 
+// The trailer's length (ISIZE) is checked as its CRC is, whether it states more or less than
+// the data holds (the reader also sizes its buffer from it).
+TEST(LoadErrors, GzipWhoseTrailerStatesAnotherLength) {
+  const std::string text = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  for (const unsigned char stated : {uint8_t(text.size() - 1), uint8_t(text.size() + 1), uint8_t(200)}) {
+    std::string bytes = gzipped(text);
+    bytes[bytes.size() - 4] = char(stated);
+    EXPECT_EQ(error_loading(bytes, "tri.off.gz"), "tri.off.gz: gzip: corrupt data (incorrect length check)")
+        << int(stated);
+  }
+}
+
 TEST(LoadErrors, TruncatedGzip) {
   std::string bytes = gzipped("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(error_loading(bytes.substr(0, bytes.size() - 10), "tri.off.gz"),
