@@ -18,11 +18,7 @@ constexpr int kMaxSteps = 1 << 20;
 }  // namespace
 
 IsosurfaceShape::IsosurfaceShape(const scene::Isosurface& iso, SurfaceInfoPtr surface)
-    : iso_(iso), surface_(std::move(surface)) {
-  const Box3 box = bounds();
-  const double size = std::max({box.hi.x - box.lo.x, box.hi.y - box.lo.y, box.hi.z - box.lo.z});
-  gradient_step_ = 1e-6 * std::max(size, 1e-3);
-}
+    : iso_(iso), surface_(std::move(surface)) {}
 
 Box3 IsosurfaceShape::bounds() const {
   if (iso_.sphere_container) {
@@ -67,13 +63,21 @@ Vec3 IsosurfaceShape::container_normal(const Vec3& p) const {
 }
 
 Vec3 IsosurfaceShape::outward_normal(const Vec3& p) const {
-  const double h = gradient_step_;
-  const Vec3 g(value(p + Vec3(h, 0, 0)) - value(p - Vec3(h, 0, 0)),
-               value(p + Vec3(0, h, 0)) - value(p - Vec3(0, h, 0)),
-               value(p + Vec3(0, 0, h)) - value(p - Vec3(0, 0, h)));
+  const double h = iso_.accuracy > 0.0 ? iso_.accuracy : 1e-3;
+  const double f = value(p);
+  const Vec3 g(value(p + Vec3(h, 0, 0)) - f, value(p + Vec3(0, h, 0)) - f,
+               value(p + Vec3(0, 0, h)) - f);
   const double length = glm::length(g);
   if (std::isfinite(length) && length > 0.0) return g / length;
   return Vec3(0.0, 1.0, 0.0);  // a flat spot of f: any direction is as good
+}
+
+double IsosurfaceShape::povray_crossing(double root, double from, double to) const {
+  const double length = to - from;
+  if (!(iso_.accuracy > 0.0) || !std::isfinite(length) || !(length > 0.0)) return root;
+  double piece = length;
+  while (piece > iso_.accuracy) piece *= 0.5;
+  return std::min(to, from + std::ceil((root - from) / piece) * piece);
 }
 
 void IsosurfaceShape::march(const Ray& ray, double tmin, double tmax, bool first_only,
@@ -90,14 +94,32 @@ void IsosurfaceShape::march(const Ray& ray, double tmin, double tmax, bool first
   }
   const double gradient = iso_.max_gradient > 0.0 ? iso_.max_gradient : 1.1;
   const double least_step = std::max(iso_.accuracy, (b - a) / kMaxSteps);
+  // POV-Ray's minimum depth: no crossing is reported within 5 accuracies of the ray's start.
+  // A ray that starts inside the solid (a shadow or reflected ray leaving a crossing, which
+  // lies past the root), or whose first crossing would lie that close, is searched from
+  // there instead, and the pieces are halved from there (measured as above: trace() from
+  // points inside and outside the solid, at three accuracies).
+  const double min_depth = 5.0 * std::max(iso_.accuracy, 0.0);
   double t = a, g0 = g(t);
+  double pieces_from = a;  // where POV-Ray's halving starts
+  if (a < min_depth && g0 < 0.0 && min_depth < b) {
+    t = pieces_from = min_depth;
+    g0 = g(t);
+  }
   while (t < b) {
     const double step = std::isfinite(g0) ? std::max(std::abs(g0) / gradient, least_step)
                                           : least_step;
     const double t1 = std::min(t + step, b);
     const double g1 = g(t1);
     if ((g0 < 0.0) != (g1 < 0.0) && std::isfinite(g0) && std::isfinite(g1)) {
-      const double root = refine_bracket(t, t1, g0, g1, g);
+      double root = povray_crossing(refine_bracket(t, t1, g0, g1, g), pieces_from, leave);
+      if (root < min_depth && pieces_from < min_depth) {
+        // Too shallow: the search starts again at the minimum depth (as POV-Ray's does).
+        if (!(min_depth < b)) break;
+        t = pieces_from = min_depth;
+        g0 = g(t);
+        continue;
+      }
       add_crossing(root, outward_normal(ray.at(root)), surface_.get(), tmin, tmax, out);
       if (first_only && !out.empty()) return;
     }
