@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/layer_blend.hpp"
 #include "render/pigment.hpp"
 
 namespace convray::render {
@@ -10,9 +11,10 @@ namespace convray::render {
 namespace {
 
 // A colour seen through a layer of colour `front` (filter and transmit let `behind` through).
-Vec3 through_layer(const scene::Color& front, const Vec3& behind) {
-  const double opacity = 1.0 - front.filter - front.transmit;
-  return opacity * front.rgb + (front.filter * front.rgb + Vec3(front.transmit)) * behind;
+Vec3 through_layer(const scene::Color& front, const Vec3& behind, Layer layer,
+                   double language_version) {
+  const LayerBlend blend = layer_blend(front, layer, language_version);
+  return blend.own * front.rgb + blend.through * behind;
 }
 
 // The integral of 1 / (1 + u^2) over s where u = u0 + g s goes from s = a to s = b (u >= 0
@@ -35,7 +37,8 @@ Vec3 sky_color(const scene::Scene& scene, const Vec3& direction) {
 
   Vec3 color = background;
   for (const scene::Pigment& pigment : sky.pigments) {
-    color = through_layer(evaluate_pigment(pigment, on_sphere), color);
+    color = through_layer(evaluate_pigment(pigment, on_sphere), color, Layer::sky,
+                          scene.settings.language_version);
   }
   return color;
 }

@@ -9,6 +9,7 @@
 #include "render/atmosphere.hpp"
 #include "render/finish.hpp"
 #include "render/interior_fade.hpp"
+#include "render/layer_blend.hpp"
 #include "render/lights.hpp"
 #include "render/normal_perturbation.hpp"
 #include "render/pigment.hpp"
@@ -150,11 +151,14 @@ Vec3 Integrator::shade_layer(const scene::Texture& texture, const Vec3& outward,
   hit.normal = perturb_normal(texture.normal, hit.point, hit.entering ? outward : -outward);
 
   const scene::Color pigment = hit.pigment;
-  Vec3 color = direct_light(hit, 1.0 - pigment.filter - pigment.transmit, stats);
+  const LayerBlend blend =
+      layer_blend(pigment, texture.below ? Layer::over_layer : Layer::over_scene,
+                  scene_.settings.language_version);
+  Vec3 color = direct_light(hit, blend.own, stats);
   const Vec3 reflection = reflection_here(hit, state);
   if (reflection != Vec3(0.0)) color += reflected_light(hit, reflection, state, stats);
   if (!pigment.opaque()) {
-    Vec3 factor = pigment.filter * pigment.rgb + Vec3(pigment.transmit);
+    Vec3 factor = blend.through;
     if (texture.finish.conserve_energy) factor *= Vec3(1.0) - reflection;
     if (texture.below) {
       color += factor * shade_texture(*texture.below, outward, hit, state, stats);

@@ -78,6 +78,10 @@ struct GlobalSettings {
   // POV-Ray 3.7 turns gamma correction off for older scenes (no #version, or one below 3.7)
   // that give no assumed_gamma: their colours are written as computed, not sRGB-encoded.
   bool gamma_correction = true;
+  // The language version in effect when the parse ended (3.62 for a scene without #version,
+  // as POV-Ray 3.7 assumes): older scenes blend transparent layers by the older rules
+  // (render/layer_blend.hpp).
+  double language_version = 3.7;
   int max_trace_level = 5;
   Vec3 ambient_light{1.0};
   double adc_bailout = 1.0 / 255.0;

@@ -202,6 +202,7 @@ scene::Scene Parser::parse_scene() {
   }
   impl_->close_open_files();
   apply_legacy_gamma(scene);
+  scene.settings.language_version = impl_->version_given ? impl_->language_version : 3.62;
   for (const auto& action : impl_->parse_end_actions) action(scene);
   return scene;
 }
