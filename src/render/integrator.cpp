@@ -37,6 +37,18 @@ Vec3 mirrored(const Vec3& direction, const Vec3& normal) {
   return direction - 2.0 * glm::dot(direction, normal) * normal;
 }
 
+// The mirror direction on a bumped surface as POV-Ray 3.7 draws it (measured on the binary: a
+// mirror sphere with quilted bumps over a checker is identical, without either rule it is
+// 19 dB off): where the bumped normal faces away from the incoming ray, the surface's own
+// normal mirrors it; a mirrored ray that would go into the surface is mirrored again about
+// the surface's own plane. `raw`: the unbumped normal, facing the viewer.
+Vec3 bumped_reflection(const Vec3& direction, const Vec3& bumped, const Vec3& raw) {
+  Vec3 out = mirrored(direction, glm::dot(direction, bumped) > 0.0 ? raw : bumped);
+  const double into = glm::dot(out, raw);
+  if (into < 0.0) out -= 2.0 * into * raw;
+  return out;
+}
+
 // Snell's law for a unit direction through a unit normal facing against it, with
 // eta = n_from / n_to; false on total internal reflection.
 bool refracted(const Vec3& direction, const Vec3& normal, double eta, Vec3& out) {
@@ -59,6 +71,7 @@ struct Integrator::HitPoint {
   Vec3 point;
   Vec3 view;             // the incoming ray's direction
   Vec3 normal;           // shading normal, unit, facing the viewer
+  Vec3 raw_normal;       // the surface's own normal (before bumps), unit, facing the viewer
   bool entering = true;  // the ray crosses into the solid (it met the outside of the surface)
   const SurfaceInfo* surface = nullptr;
   const scene::Finish* finish = nullptr;
@@ -148,7 +161,8 @@ Vec3 Integrator::shade_layer(const scene::Texture& texture, const Vec3& outward,
   // The normal turns to face the viewer (the inside of a solid seen from within is lit like an
   // outside), then bumps tilt it: POV-Ray 3.7 bumps the side that is seen, so the inside of a
   // bumped surface is not the outside's bumps turned over (measured: interior_texture.pov).
-  hit.normal = perturb_normal(texture.normal, hit.point, hit.entering ? outward : -outward);
+  hit.raw_normal = hit.entering ? outward : -outward;
+  hit.normal = perturb_normal(texture.normal, hit.point, hit.raw_normal);
 
   const scene::Color pigment = hit.pigment;
   const LayerBlend blend =
@@ -254,7 +268,7 @@ Vec3 Integrator::reflected_light(const HitPoint& hit, const Vec3& reflection,
   child.level = state.level + 1;
   child.weight = weight;
   child.viewer = geometry::World::Viewer::reflection;
-  const Ray ray{hit.point, mirrored(hit.view, hit.normal)};
+  const Ray ray{hit.point, bumped_reflection(hit.view, hit.normal, hit.raw_normal)};
   return reflection * trace(ray, child, settings_.ray_offset, stats);
 }
 
