@@ -350,6 +350,14 @@ std::string Parser::resolve_file(const std::string& name, const SourceLoc& loc,
   return impl_->resolve(name, loc, true);  // fails, saying where it looked
 }
 
+void Parser::count_mesh_elements(ElementCount& held, std::size_t count, const SourceLoc& loc) {
+  impl_->recount_elements(held, count, loc);
+}
+
+void Parser::check_element_budget(std::size_t more, const SourceLoc& loc) const {
+  impl_->check_element_budget(more, loc);
+}
+
 void Parser::fail(const SourceLoc& loc, const std::string& message) const {
   impl_->fail(loc, message);
 }
