@@ -13,6 +13,7 @@
 #include "sdl/items.hpp"
 #include "sdl/keywords.hpp"
 #include "sdl/parser_impl.hpp"
+#include "util/file_kind.hpp"
 #include "util/printable.hpp"
 
 namespace convray::sdl {
@@ -29,18 +30,6 @@ bool read_file(const std::string& path, std::string& text) {
 }
 
 namespace {
-
-std::string describe_file_kind(const std::filesystem::file_status& status) {
-  namespace fs = std::filesystem;
-  switch (status.type()) {
-    case fs::file_type::directory: return "a folder";
-    case fs::file_type::fifo: return "a named pipe";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::block: return "a block device";
-    case fs::file_type::socket: return "a socket";
-    default: return "not a regular file";
-  }
-}
 
 // Declare=ID=VALUE from the command line names an identifier: a reserved word there would be
 // shadowed by the keyword in every use, so it is refused rather than silently ignored.
@@ -389,6 +378,9 @@ Parser::NestingGuard::~NestingGuard() { parser_.impl_->leave_nesting(); }
 // --- Whole scenes -------------------------------------------------------------------------
 
 ParseResult parse_file(const std::string& path, const ParseOptions& options) {
+  if (const std::optional<std::string> kind = not_a_file(path)) {
+    throw InputError({path}, "cannot read the scene file: it " + *kind);
+  }
   std::string text;
   if (!read_file(path, text)) throw InputError({path}, "cannot read the scene file");
   return parse_string(text, path, options);

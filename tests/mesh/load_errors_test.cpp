@@ -1,6 +1,7 @@
 // Every malformed input is an InputError that names the file, says what is wrong and, where
 // it applies, the element (counted from 0) and the line.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "mesh/load.hpp"
 #include "mesh/procedural.hpp"
@@ -230,7 +231,24 @@ TEST(LoadErrors, Directory) {
   testing::ScratchDirectory scratch;
   std::filesystem::create_directory(scratch.file("folder.ply"));
   EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("folder.ply")); }),
-            scratch.file("folder.ply") + ": cannot read the file: it is a directory");
+            scratch.file("folder.ply") + ": cannot read the file: it is a folder, not a file");
+}
+
+// A named pipe would wait for a writer, /dev/zero would never end, a loop of links has no file
+// at its end: each named for what it is before anything is opened.
+TEST(LoadErrors, PipesDevicesAndLinkLoops) {
+  testing::ScratchDirectory scratch;
+  ASSERT_EQ(::mkfifo(scratch.file("pipe.ply").c_str(), 0600), 0);
+  std::filesystem::create_symlink("/dev/zero", scratch.file("zero.ply"));
+  std::filesystem::create_symlink(scratch.file("b.ply"), scratch.file("a.ply"));
+  std::filesystem::create_symlink(scratch.file("a.ply"), scratch.file("b.ply"));
+  EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("pipe.ply")); }),
+            scratch.file("pipe.ply") + ": cannot read the file: it is a named pipe, not a file");
+  EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("zero.ply")); }),
+            scratch.file("zero.ply") +
+                ": cannot read the file: it is a character device, not a file");
+  EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("a.ply")); }),
+            scratch.file("a.ply") + ": cannot read the file: it is a loop of symbolic links");
 }
 
 TEST(LoadErrors, EmptyFile) {
