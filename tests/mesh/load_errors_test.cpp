@@ -257,6 +257,26 @@ TEST(LoadErrors, EmptyFile) {
   }
 }
 
+// A face is counted once however many triangles it has: one 255-corner face (the most a PLY
+// list with a uchar count holds) naming one vertex 255 times, or with its corners on a line.
+TEST(LoadErrors, ADroppedPolygonIsOneFace) {
+  std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 255\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string vertices, repeated = "255", line = "255";
+  for (int i = 0; i < 255; ++i) {
+    vertices += std::to_string(i) + " 0 0\n";
+    repeated += " 0";
+    line += " " + std::to_string(i);
+  }
+  EXPECT_EQ(error_loading(header + vertices + repeated + "\n", "repeated.ply"),
+            "repeated.ply: nothing left to render: all 1 faces are degenerate (0 with zero area, 1 "
+            "with a repeated vertex)");
+  EXPECT_EQ(error_loading(header + vertices + line + "\n", "line.ply"),
+            "line.ply: nothing left to render: all 1 faces are degenerate (1 with zero area, 0 "
+            "with a repeated vertex)");
+}
+
 TEST(LoadErrors, NothingToRender) {
   // Vertices alone are a point cloud; a file with no vertex at all has nothing.
   EXPECT_EQ(error_loading("# nothing but a comment\n", "none.obj"),
