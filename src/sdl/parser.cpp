@@ -31,9 +31,10 @@ bool read_file(const std::string& path, std::string& text) {
 
 namespace {
 
-// Declare=ID=VALUE from the command line names an identifier: a reserved word there would be
-// shadowed by the keyword in every use, so it is refused rather than silently ignored.
-void check_declared_name(const std::string& name) {
+// Declare=ID=VALUE from the command line names an identifier. A name that is not one is
+// refused; a reserved word is shadowed by the keyword in every use, so POV-Ray accepts it and
+// nothing can read it: convray accepts it too, and says so (`warning`, returned).
+std::optional<std::string> check_declared_name(const std::string& name) {
   const SourceLoc where{"command line"};
   const bool letters = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) ||
                                          name[0] == '_');
@@ -45,9 +46,11 @@ void check_declared_name(const std::string& name) {
                                 "' is not an identifier (a letter or _, then letters, digits, _)");
   }
   if (classify_word(name) != Word::none) {
-    throw InputError(where, "Declare=" + name + ": '" + name +
-                                "' is a reserved word of the scene language, not an identifier");
+    return "Declare=" + name + ": '" + name +
+           "' is a reserved word of the scene language, so the scene cannot read this "
+           "declaration (POV-Ray ignores it too); ignored";
   }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -58,7 +61,10 @@ Parser::Impl::Impl(Parser& owner_parser, ParseOptions parse_options)
     : owner(owner_parser), options(std::move(parse_options)) {
   push_scope();  // the global scope
   for (const auto& [name, value] : options.declares) {
-    check_declared_name(name);
+    if (const std::optional<std::string> warning = check_declared_name(name)) {
+      warn(SourceLoc{"command line"}, *warning);
+      continue;
+    }
     declare_global(name, make_value(value));
   }
 }
@@ -170,7 +176,8 @@ Parser::Parser(std::string file_name, std::string text, ParseOptions options)
   std::unique_ptr<SourceFile> file = tokenize(std::move(file_name), std::move(text));
   Impl& impl = *impl_;
   impl.allow_reads_for(file->name);
-  impl.warnings = std::move(file->warnings);
+  // After the command line's (Declare=), the lexer's.
+  for (std::string& warning : file->warnings) impl.warnings.push_back(std::move(warning));
   file->warnings.clear();
   impl.files_by_name.emplace(file->name, file.get());
   const SourceFile& scene = *file;
