@@ -225,13 +225,12 @@ struct CauchySurface::Tracer {
   }
 
   SurfaceHit smooth_hit(double t) const {
-    SurfaceHit hit{t, ray.at(t), -ray.direction};
-    if (!want_normals) return hit;
+    if (!want_normals) return SurfaceHit{t, ray.at(t), -ray.direction};
     Vec3 gradient(0.0);
-    for (const uint32_t id : active) gradient += surface.primitive_field(id, hit.point).gradient;
-    const double length = glm::length(gradient);
-    if (length > 0.0) hit.normal = -gradient / length;
-    return hit;
+    const Vec3 p = ray.at(t);
+    for (const uint32_t id : active) gradient += surface.primitive_field(id, p).gradient;
+    // Normalised without overflow or underflow at extreme strengths (1e200, 1e-160).
+    return surface_hit_from_gradient(ray, t, gradient);
   }
 
   // A jump of F - T across a box face at t: the face's normal, out of the solid.
