@@ -57,10 +57,10 @@ FrameClock FrameList::operator[](size_t i) const {
   const long long frame = start_ + (long long)(i)*step_;
   f.frame_number = frame;
   // Interpolated rather than accumulated, so that the last frame lands on final_clock.
-  f.clock = clock_steps_ > 0 ? f.initial_clock + (f.final_clock - f.initial_clock) *
-                                                     double(frame - f.initial_frame) /
-                                                     double(clock_steps_)
-                             : f.initial_clock;
+  f.clock = clock_steps_ > 0
+                ? f.initial_clock + (f.final_clock - f.initial_clock) *
+                                        double(frame - f.initial_frame) / double(clock_steps_)
+                : f.initial_clock;
   return f;
 }
 

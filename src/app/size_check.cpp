@@ -42,10 +42,8 @@ void refuse_unless_image_fits(int width, int height, const std::string& advice, 
                      std::to_string(pixels) + " pixels", advice, force);
 }
 
-
-void refuse_unless_frames_fit_on_disk(uint64_t frames, int width, int height,
-                                      int bits_per_channel, const std::string& output,
-                                      bool force) {
+void refuse_unless_frames_fit_on_disk(uint64_t frames, int width, int height, int bits_per_channel,
+                                      const std::string& output, bool force) {
   if (force) return;
   // Rows of 3 channels with a filter byte each, and a few KiB of headers: the most a PNG (or an
   // uncompressed TIFF or EXR) of the image can take.
@@ -57,10 +55,9 @@ void refuse_unless_frames_fit_on_disk(uint64_t frames, int width, int height,
   const std::optional<uint64_t> free = free_disk_bytes(folder);
   if (!free || frames <= *free / per_frame) return;
   throw UsageError("the " + std::to_string(frames) + " frames of " + std::to_string(width) + "x" +
-                   std::to_string(height) + " may need up to " +
-                   byte_size(frames * per_frame) + " on disk (" + byte_size(per_frame) +
-                   " a frame, uncompressed), more than the " + byte_size(*free) + " free in '" +
-                   folder +
+                   std::to_string(height) + " may need up to " + byte_size(frames * per_frame) +
+                   " on disk (" + byte_size(per_frame) + " a frame, uncompressed), more than the " +
+                   byte_size(*free) + " free in '" + folder +
                    "': give fewer frames (+KFI, +KFF, +SF, +EF, Frame_Step), a smaller +W and +H "
                    "or another output folder, or --force to try anyway");
 }

@@ -23,7 +23,7 @@ void refuse_unless_image_fits(int width, int height, const std::string& advice, 
 // plus a row byte and headers; a PNG is never larger) exceeds the space free there for this
 // user (statvfs), unless `force`. Checked before the first frame, so that a run that cannot
 // fit does not fill the disk first and fail hours later.
-void refuse_unless_frames_fit_on_disk(uint64_t frames, int width, int height,
-                                      int bits_per_channel, const std::string& output, bool force);
+void refuse_unless_frames_fit_on_disk(uint64_t frames, int width, int height, int bits_per_channel,
+                                      const std::string& output, bool force);
 
 }  // namespace convray::app

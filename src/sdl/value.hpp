@@ -50,7 +50,6 @@ using ColorMap = std::vector<scene::ColorMapEntry>;
 // memory of one array element).
 inline constexpr std::size_t kStringBytesPerElement = 96;
 
-
 struct Value {
   std::variant<std::monostate,                            // not (yet) set
                double, Vector, std::string, std::shared_ptr<Array>,

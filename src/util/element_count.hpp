@@ -17,8 +17,7 @@ class ElementCount {
   using Live = std::shared_ptr<std::atomic<std::size_t>>;
 
   ElementCount() = default;
-  ElementCount(Live live, std::size_t count)
-      : live_(std::move(live)), count_(count) {
+  ElementCount(Live live, std::size_t count) : live_(std::move(live)), count_(count) {
     if (live_) *live_ += count_;
   }
   ElementCount(const ElementCount& other) : ElementCount(other.live_, other.count_) {}
@@ -33,7 +32,8 @@ class ElementCount {
     other.count_ = 0;
     return *this;
   }
-  ElementCount(ElementCount&& other) noexcept : live_(std::move(other.live_)), count_(other.count_) {
+  ElementCount(ElementCount&& other) noexcept
+      : live_(std::move(other.live_)), count_(other.count_) {
     other.count_ = 0;
   }
   ~ElementCount() { release(); }

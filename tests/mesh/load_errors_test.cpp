@@ -244,9 +244,9 @@ TEST(LoadErrors, PipesDevicesAndLinkLoops) {
   std::filesystem::create_symlink(scratch.file("a.ply"), scratch.file("b.ply"));
   EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("pipe.ply")); }),
             scratch.file("pipe.ply") + ": cannot read the file: it is a named pipe, not a file");
-  EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("zero.ply")); }),
-            scratch.file("zero.ply") +
-                ": cannot read the file: it is a character device, not a file");
+  EXPECT_EQ(
+      input_error_of([&] { load_mesh(scratch.file("zero.ply")); }),
+      scratch.file("zero.ply") + ": cannot read the file: it is a character device, not a file");
   EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("a.ply")); }),
             scratch.file("a.ply") + ": cannot read the file: it is a loop of symbolic links");
 }

@@ -196,7 +196,8 @@ TEST_F(HostileInput, AnAnimationThatCannotFitOnTheDiskIsRefusedBeforeAnyFrame) {
   const std::string start = "convray: the 9999999 frames of 2000x2000 may need up to ";
   ASSERT_EQ(r.err.rfind(start, 0), 0u) << r.err;
   const double per_frame = (2000.0 * 3 + 1) * 2000 + 4096;
-  EXPECT_NEAR(bytes_of(r.err.substr(start.size())), 9999999 * per_frame, 0.001 * 9999999 * per_frame);
+  EXPECT_NEAR(bytes_of(r.err.substr(start.size())), 9999999 * per_frame,
+              0.001 * 9999999 * per_frame);
   EXPECT_NE(r.err.find("on disk (12 MB a frame, uncompressed)"), std::string::npos) << r.err;
   const size_t free_at = r.err.find("more than the ");
   ASSERT_NE(free_at, std::string::npos) << r.err;
