@@ -9,7 +9,7 @@ namespace convray::app {
 namespace {
 
 // A frame count beyond which an animation is surely a typo: ten million frames are 111 hours
-// of film at 25 frames per second (and the plan alone would take most of a gigabyte).
+// of film at 25 frames per second.
 constexpr long long kMaxFrames = 10'000'000;
 
 FrameClock still_frame(const AnimationOptions& o) {
@@ -47,6 +47,23 @@ long long clamp_subset(long long frame, long long first, long long last, const c
 
 }  // namespace
 
+FrameList::FrameList(const FrameClock& pattern, long long start, long long step, size_t count,
+                     long long clock_steps)
+    : pattern_(pattern), start_(start), count_(count), step_(step), clock_steps_(clock_steps) {}
+
+FrameClock FrameList::operator[](size_t i) const {
+  FrameClock f = pattern_;
+  if (step_ == 0) return f;  // the still
+  const long long frame = start_ + (long long)(i)*step_;
+  f.frame_number = frame;
+  // Interpolated rather than accumulated, so that the last frame lands on final_clock.
+  f.clock = clock_steps_ > 0
+                ? f.initial_clock + (f.final_clock - f.initial_clock) *
+                                        double(frame - f.initial_frame) / double(clock_steps_)
+                : f.initial_clock;
+  return f;
+}
+
 int decimal_digits(long long n) {
   int digits = 1;
   for (; n >= 10; n /= 10) ++digits;
@@ -63,7 +80,7 @@ FramePlan plan_frames(const AnimationOptions& o) {
     throw UsageError("the initial and final clock must be finite numbers");
   }
   if (!o.initial_frame && !o.final_frame) {
-    plan.frames.push_back(still_frame(o));
+    plan.frames = FrameList(still_frame(o));
     return plan;
   }
   plan.animated = true;
@@ -102,22 +119,15 @@ FramePlan plan_frames(const AnimationOptions& o) {
                      ") before it starts (frame " + std::to_string(start) + ")");
   }
   plan.name_digits = decimal_digits(clock_last);
-  for (long long frame = start; frame <= end; frame += o.frame_step) {
-    FrameClock f;
-    f.frame_number = frame;
-    f.clock_on = true;
-    f.initial_frame = first;
-    f.final_frame = clock_last;
-    f.initial_clock = o.initial_clock;
-    f.final_clock = o.final_clock;
-    f.clock_delta = delta;
-    // Interpolated rather than accumulated, so that the last frame lands on final_clock.
-    f.clock = steps > 0 ? o.initial_clock + (o.final_clock - o.initial_clock) *
-                                                double(frame - first) / double(steps)
-                        : o.initial_clock;
-    plan.frames.push_back(f);
-    if (end - frame < o.frame_step) break;  // no overflow past the end
-  }
+  FrameClock pattern;
+  pattern.clock_on = true;
+  pattern.initial_frame = first;
+  pattern.final_frame = clock_last;
+  pattern.initial_clock = o.initial_clock;
+  pattern.final_clock = o.final_clock;
+  pattern.clock_delta = delta;
+  const auto frames = size_t((end - start) / o.frame_step + 1);
+  plan.frames = FrameList(pattern, start, o.frame_step, frames, steps);
   return plan;
 }
 

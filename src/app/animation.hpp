@@ -12,6 +12,7 @@
 //  - a subset end past the final frame is clamped to it, with a warning (POV-Ray renders
 //    frames past the end, extrapolating the clock); a subset that ends before it starts, and
 //    a final frame before the initial one, are errors (POV-Ray renders one frame with a NaN).
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,10 +38,50 @@ struct FrameClock {
   double initial_clock = 0.0, final_clock = 0.0;
 };
 
+// The frames of a plan, each computed when it is asked for: ten million frames take a few
+// numbers here, not the 800 MB a list of them would (issue 17).
+class FrameList {
+ public:
+  class Iterator {
+   public:
+    Iterator(const FrameList& list, size_t index) : list_(&list), index_(index) {}
+    FrameClock operator*() const { return (*list_)[index_]; }
+    Iterator& operator++() {
+      ++index_;
+      return *this;
+    }
+    bool operator!=(const Iterator& other) const { return index_ != other.index_; }
+
+   private:
+    const FrameList* list_;
+    size_t index_;
+  };
+
+  // One still frame.
+  explicit FrameList(const FrameClock& still = {}) : pattern_(still), count_(1), step_(0) {}
+  // Frames start, start + step, ... (`count` of them), numbered and clocked as in `pattern`
+  // (initial and final frame and clock, clock_delta); `clock_steps` steps of the clock from
+  // pattern.initial_frame run from initial_clock to final_clock.
+  FrameList(const FrameClock& pattern, long long start, long long step, size_t count,
+            long long clock_steps);
+
+  size_t size() const { return count_; }
+  FrameClock operator[](size_t i) const;
+  Iterator begin() const { return {*this, 0}; }
+  Iterator end() const { return {*this, count_}; }
+
+ private:
+  FrameClock pattern_;
+  long long start_ = 0;
+  size_t count_ = 0;
+  long long step_ = 0;
+  long long clock_steps_ = 0;
+};
+
 struct FramePlan {
-  bool animated = false;           // false: one still image, no frame number in its file name
-  int name_digits = 0;             // frame numbers in file names are zero-padded to this width
-  std::vector<FrameClock> frames;  // in rendering order (ascending frame numbers)
+  bool animated = false;  // false: one still image, no frame number in its file name
+  int name_digits = 0;    // frame numbers in file names are zero-padded to this width
+  FrameList frames;       // in rendering order (ascending frame numbers)
   std::vector<std::string> warnings;
 };
 

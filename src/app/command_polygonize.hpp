@@ -29,8 +29,9 @@ struct PolygonizeOptions {
 
 // Before each pass of the lattice, its size is estimated (polygonize/size_estimate.hpp);
 // a large one is printed to `err`, one that cannot fit in memory refused (exit 2) unless
-// `force`. Returns the exit code: 0; 1 when the surface is empty or out of memory; 2 for bad input (the message, with
-// file:line:col where it applies, goes to `err`). Nothing is written unless it succeeds.
+// `force`. Returns the exit code: 0; 1 when out of memory; 2 for bad input, an empty surface
+// included (the message, with file:line:col where it applies, goes to `err`). Nothing is
+// written unless it succeeds.
 int run_polygonize(const PolygonizeOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace convray::app

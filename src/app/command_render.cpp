@@ -181,8 +181,9 @@ class FrameRenderer {
   CommandStep& step_;
 };
 
-// Everything that can be checked before the work starts: the destination, the video tool.
-void check_before_rendering(const RenderOptions& o) {
+// Everything that can be checked before the work starts: the destination, the image's memory,
+// the frames' disk space, the video tool.
+void check_before_rendering(const RenderOptions& o, const FramePlan& plan) {
   if (o.output_is_folder) {
     std::error_code error;
     std::filesystem::create_directories(std::filesystem::path(o.output).parent_path(), error);
@@ -192,6 +193,10 @@ void check_before_rendering(const RenderOptions& o) {
   }
   check_image_destination(o.output);
   refuse_unless_image_fits(o.width, o.height, "give a smaller +W and +H", o.force);
+  if (plan.animated) {
+    refuse_unless_frames_fit_on_disk(plan.frames.size(), o.width, o.height,
+                                     image_format_for(o.output).bits, o.output, o.force);
+  }
   if (!o.video.empty()) check_video_tools(o.video);
 }
 
@@ -223,7 +228,7 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err,
   const FramePlan plan = plan_frames(o.animation);
   for (const std::string& warning : plan.warnings) err << "convray: warning: " << warning << "\n";
   if (o.list_frames) return list_frames(o, plan, out);
-  check_before_rendering(o);
+  check_before_rendering(o, plan);
   warn_about_missing_library_folders(o, err);
   std::unique_ptr<tbb::global_control> threads;
   if (o.threads > 0) {
@@ -232,12 +237,12 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err,
   }
   const Clock::time_point start = Clock::now();
   FrameRenderer renderer(o, plan, out, err, step);
-  std::vector<std::string> files;
+  std::vector<std::string> files;  // for the video only: millions of frames need no list
   size_t skipped = 0;
   for (size_t i = 0; i < plan.frames.size(); ++i) {
-    const FrameClock& frame = plan.frames[i];
+    const FrameClock frame = plan.frames[i];
     const std::string file = file_of(o, plan, frame);
-    files.push_back(file);
+    if (!o.video.empty()) files.push_back(file);
     if (o.continue_trace && image_file_is_complete(file, o.width, o.height)) {
       ++skipped;
       if (!o.quiet) out << "convray: " << file << " is complete; skipped (+C)\n";

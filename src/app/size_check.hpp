@@ -18,4 +18,12 @@ void refuse_unless_fits(uint64_t bytes, const std::string& job, const std::strin
 // and the encoded file cannot fit; `advice` names the options that set the size.
 void refuse_unless_image_fits(int width, int height, const std::string& advice, bool force);
 
+// An animation's `frames` images of width x height written to `output`'s folder: refused when
+// their largest size (each image uncompressed in its format, `bits_per_channel` x 3 channels,
+// plus a row byte and headers; a PNG is never larger) exceeds the space free there for this
+// user (statvfs), unless `force`. Checked before the first frame, so that a run that cannot
+// fit does not fill the disk first and fail hours later.
+void refuse_unless_frames_fit_on_disk(uint64_t frames, int width, int height, int bits_per_channel,
+                                      const std::string& output, bool force);
+
 }  // namespace convray::app

@@ -8,6 +8,7 @@
 
 #include "core/bracket_refine.hpp"
 #include "field/cauchy.hpp"
+#include "implicit/repeated_triangles.hpp"
 
 namespace convray::implicit {
 
@@ -66,14 +67,23 @@ CauchySurface::CauchySurface(const scene::ConvolutionObject& object)
   };
   for (size_t m = 0; m < object.meshes.size(); ++m) {
     const scene::MeshComponent& mesh = object.meshes[m];
-    for (const field::Triangle& t : mesh.triangles) {
+    // Exactly repeated triangles (issue 17) have the same field and the same truncation box:
+    // each distinct one once, with its multiplicity times the mesh's strength.
+    const std::optional<DistinctTriangles> merged = merge_repeated(mesh.triangles);
+    const std::span<const field::Triangle> distinct =
+        merged ? std::span<const field::Triangle>(merged->triangles) : mesh.triangles;
+    if (merged) merged_triangles_ += mesh.triangles.size() - merged->triangles.size();
+    for (size_t i = 0; i < distinct.size(); ++i) {
+      const field::Triangle& t = distinct[i];
       const double area = 0.5 * glm::length(glm::cross(t.b - t.a, t.c - t.a));
       if (!(area > 0.0)) continue;  // zero field: nothing to truncate
       CauchyPrimitive p;
       p.shape = CauchyPrimitive::Shape::triangle;
       p.v[0] = t.a, p.v[1] = t.b, p.v[2] = t.c;
       p.component = {scene::ComponentKind::mesh, uint32_t(m)};
-      add(p, mesh.weight, 3, area, kPi * kPi / (2.0 * s_));
+      scene::Weight weight = mesh.weight;
+      if (merged) weight.strength *= double(merged->multiplicity[i]);
+      add(p, weight, 3, area, kPi * kPi / (2.0 * s_));
     }
   }
   for (size_t i = 0; i < object.segments.size(); ++i) {
@@ -225,13 +235,12 @@ struct CauchySurface::Tracer {
   }
 
   SurfaceHit smooth_hit(double t) const {
-    SurfaceHit hit{t, ray.at(t), -ray.direction};
-    if (!want_normals) return hit;
+    if (!want_normals) return SurfaceHit{t, ray.at(t), -ray.direction};
     Vec3 gradient(0.0);
-    for (const uint32_t id : active) gradient += surface.primitive_field(id, hit.point).gradient;
-    const double length = glm::length(gradient);
-    if (length > 0.0) hit.normal = -gradient / length;
-    return hit;
+    const Vec3 p = ray.at(t);
+    for (const uint32_t id : active) gradient += surface.primitive_field(id, p).gradient;
+    // Normalised without overflow or underflow at extreme strengths (1e200, 1e-160).
+    return surface_hit_from_gradient(ray, t, gradient);
   }
 
   // A jump of F - T across a box face at t: the face's normal, out of the solid.

@@ -51,6 +51,9 @@ class CauchySurface final : public Surface {
   // The union of the truncation boxes: F = 0 outside.
   Box3 bounds() const override { return bvh_.bounds(); }
   size_t primitive_count() const override { return primitives_.size(); }
+  // Triangles left out as exact repeats of another of their mesh, summed once with their
+  // multiplicity (repeated_triangles.hpp).
+  size_t merged_triangle_count() const { return merged_triangles_; }
   size_t memory_bytes() const override;
   const std::vector<CauchyPrimitive>& primitives() const { return primitives_; }
   // The truncation boxes in object space: primitive i's field is zero outside box i.
@@ -92,6 +95,7 @@ class CauchySurface final : public Surface {
   double threshold_ = 1.0;
   double min_step_ = 1e-5;
   std::vector<CauchyPrimitive> primitives_;
+  size_t merged_triangles_ = 0;
   BoxBvh bvh_;
 };
 

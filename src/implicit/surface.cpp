@@ -5,6 +5,7 @@
 
 #include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
+#include "util/unit_vector.hpp"
 
 namespace convray::implicit {
 
@@ -29,21 +30,10 @@ SurfaceHit surface_hit_from_gradient(const Ray& ray, double t, const Vec3& g) {
   hit.t = t;
   hit.point = ray.at(t);
   // Inside is F >= T, so the field falls outwards; a vanishing gradient (a touching point)
-  // falls back to facing the ray. Gradients of extreme strengths (1e200, 1e-160) overflow or
-  // underflow when squared: they are scaled by their largest component first.
-  double length = glm::length(g);
-  if (length > 1e-150 && length < 1e150) {
-    hit.normal = -g / length;
-    return hit;
-  }
-  const double largest = std::max({std::abs(g.x), std::abs(g.y), std::abs(g.z)});
-  if (!(largest > 0.0) || !std::isfinite(largest)) {
-    hit.normal = -ray.direction;
-    return hit;
-  }
-  const Vec3 scaled = g / largest;
-  length = glm::length(scaled);
-  hit.normal = -scaled / length;
+  // falls back to facing the ray. Gradients of extreme strengths (1e200, 1e-160) are scaled
+  // before they are normalised (unit_or_zero).
+  const Vec3 unit = unit_or_zero(g);
+  hit.normal = unit == Vec3(0.0) ? -ray.direction : -unit;
   return hit;
 }
 

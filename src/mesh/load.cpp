@@ -10,6 +10,7 @@
 #include "mesh/load_error.hpp"
 #include "mesh/polygon_mesh.hpp"
 #include "mesh/readers.hpp"
+#include "util/file_kind.hpp"
 
 namespace convray::mesh {
 namespace {
@@ -17,8 +18,12 @@ namespace {
 // The whole file in one allocation of its size (meshes are read whole: PLY's elements may
 // come in any order, OBJ's faces may point forward).
 std::string read_file(const std::string& path) {
+  // A folder, named pipe (which would wait for a writer), device (/dev/zero never ends) or a
+  // loop of links is named as what it is.
+  if (const std::optional<std::string> kind = not_a_file(path)) {
+    fail(path, "cannot read the file: it " + *kind);
+  }
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) fail(path, "cannot read the file: it is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot open the file: ") + std::strerror(errno));
   std::string bytes;

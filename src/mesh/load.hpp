@@ -53,8 +53,10 @@ struct LoadReport {
   size_t faces_read = 0;               // faces (polygons) in the file
   size_t triangles_kept = 0;           // triangles in the soup
   size_t polygons_triangulated = 0;    // faces with more than three corners
-  size_t dropped_zero_area = 0;        // triangles whose corners are collinear or coincide
-  size_t dropped_repeated_vertex = 0;  // triangles that name one vertex index twice
+  // Faces dropped whole, no triangle of theirs spanning an area: those that name one vertex
+  // index twice, and the others (corners collinear or coincident).
+  size_t dropped_zero_area = 0;
+  size_t dropped_repeated_vertex = 0;
   size_t lines_read = 0;               // polylines (OBJ `l`) and edges (PLY `edge`)
   size_t segments_kept = 0;            // segments of those lines
   size_t dropped_zero_length = 0;      // segments whose two ends coincide

@@ -50,17 +50,22 @@ bool has_zero_area(const Triangle& t, const std::vector<Vec3>& positions) {
   return normal == Vec3(0.0);
 }
 
-// Keeps the triangles that span an area, and counts the others.
-void keep_proper_triangles(const std::vector<Triangle>& triangles, TriangleSoup& soup, LoadReport& report) {
+// Keeps the triangles of one face that span an area. A face none of whose triangles does is
+// counted as dropped, once (a 255-corner face is one face, not its 253 triangles): for a
+// repeated vertex when it names one twice, else for zero area.
+void keep_proper_triangles(const std::vector<Triangle>& triangles, TriangleSoup& soup,
+                           LoadReport& report) {
+  const size_t before = soup.triangles.size();
+  bool repeated_vertex = false;
   for (const Triangle& t : triangles) {
     if (has_repeated_vertex(t)) {
-      ++report.dropped_repeated_vertex;
-    } else if (has_zero_area(t, soup.vertices)) {
-      ++report.dropped_zero_area;
-    } else {
+      repeated_vertex = true;
+    } else if (!has_zero_area(t, soup.vertices)) {
       soup.triangles.push_back(t);
     }
   }
+  if (soup.triangles.size() > before) return;
+  ++(repeated_vertex ? report.dropped_repeated_vertex : report.dropped_zero_area);
 }
 
 void add_triangles(const PolygonMesh& polygons, LoadedMesh& mesh, const std::string& file) {

@@ -13,6 +13,7 @@
 #include "polygonize/block_grid.hpp"
 #include "polygonize/edge_root.hpp"
 #include "polygonize/tetrahedra.hpp"
+#include "util/unit_vector.hpp"
 
 namespace convray::polygonize {
 
@@ -160,8 +161,9 @@ SurfaceMesh polygonize(const FieldSource& source, const PolygonizeOptions& optio
     const EdgeRoot root =
         find_edge_root(source, a, edges[v].f_low, b, edges[v].f_high, options.tolerance);
     result.soup.vertices[v] = root.position;
-    const double length = glm::length(root.sample.gradient);
-    result.normals[v] = length > 0.0 ? -root.sample.gradient / length : Vec3(0.0);
+    // Outwards, where the field falls; scaled first for extreme strengths (1e200, 1e-160).
+    const Vec3 unit = unit_or_zero(root.sample.gradient);
+    result.normals[v] = unit == Vec3(0.0) ? Vec3(0.0) : -unit;
     residuals[v] = std::abs(root.sample.value - source.threshold) / source.threshold;
     evaluations += size_t(root.evaluations);
     if (!root.converged) ++unconverged;

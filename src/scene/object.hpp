@@ -14,6 +14,7 @@
 #include "scene/function.hpp"
 #include "scene/texture.hpp"
 #include "scene/transform.hpp"
+#include "util/element_count.hpp"
 #include "util/error.hpp"
 #include "util/math.hpp"
 
@@ -86,6 +87,9 @@ struct TriangleMesh {
   std::vector<TexturePtr> textures;
   // `inside_vector`: a mesh with one is a solid (inside by ray parity along it).
   std::optional<Vec3> inside_vector;
+  // The mesh's vertices, normals, textures and faces in the scene parser's element budget
+  // (docs/limits.md): each copy of the mesh counts them again, as it takes their memory again.
+  ElementCount counted;
 };
 
 // POV-Ray's `poly`, `cubic`, `quartic` and `quadric`: the surface where the polynomial

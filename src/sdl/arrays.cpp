@@ -49,12 +49,14 @@ Value Parser::Impl::parse_array_declaration() {
     advance();
     while (!accept_symbol('}')) {
       if (array->elements.size() == kMaxArrayElements) fail_here("array too large");
-      if (array->elements.size() % 4096 == 0) reserve_elements(4096, ref());
-      array->elements.push_back(parse_rvalue());
+      const TokenRef element_at = ref();
+      Value element = parse_rvalue();
+      recount_elements(array->counted, array->counted.count() + 1 + string_elements(element),
+                       loc(element_at));
+      array->elements.push_back(std::move(element));
       accept_symbol(',');  // optional, as POV-Ray's commas are
     }
     if (array->elements.empty()) fail(at, "an array needs at least one element");
-    array->counted = reserve_elements(array->elements.size(), at);
     array->dimensions.push_back(int(array->elements.size()));
     return Value{array, {}};
   }
@@ -85,7 +87,11 @@ void Parser::Impl::parse_array_initializer(Array& array, std::size_t dimension, 
     if (dimension + 1 < array.dimensions.size()) {
       parse_array_initializer(array, dimension + 1, next);
     } else {
-      array.elements[next++] = parse_rvalue();
+      const TokenRef element_at = ref();
+      Value element = parse_rvalue();
+      recount_elements(array.counted, array.counted.count() + string_elements(element),
+                       loc(element_at));
+      array.elements[next++] = std::move(element);
     }
     ++count;
     accept_symbol(',');  // optional, as POV-Ray's commas are
@@ -153,7 +159,7 @@ Value* Parser::Impl::element_at(Value& root, const std::vector<std::size_t>& pat
     }
     if (for_write && array->use_count() > 1) {
       charge((*array)->elements.size() / kElementsPerToken);
-      reserve_elements((*array)->elements.size(), at);  // the copy holds them again
+      reserve_elements((*array)->counted.count(), at);  // the copy holds them again
       *array = std::make_shared<Array>(**array);
     }
     cursor = &(*array)->elements[flat];
@@ -161,13 +167,46 @@ Value* Parser::Impl::element_at(Value& root, const std::vector<std::size_t>& pat
   return cursor;
 }
 
-ElementCount Parser::Impl::reserve_elements(std::size_t count, TokenRef at) {
-  const std::size_t budget = options.max_live_array_elements;
-  if (count > budget - std::min(*live_array_elements, budget)) {
-    fail(at, "the scene's arrays would hold more than " + std::to_string(budget) +
-                 " elements in all (an array of arrays counts every element of each)");
+void Parser::Impl::store_element(Value& root, const std::vector<std::size_t>& path, Value value,
+                                 std::string_view name, TokenRef at) {
+  Value* slot = element_at(root, path, true, name, at);
+  // The array that holds the slot, now unshared: the last level of the path.
+  Value* holder = &root;
+  for (std::size_t level = 0; level + 1 < path.size(); ++level) {
+    holder = &std::get<std::shared_ptr<Array>>(holder->data)->elements[path[level]];
   }
+  Array& array = **std::get_if<std::shared_ptr<Array>>(&holder->data);
+  recount_elements(array.counted,
+                   array.counted.count() - string_elements(*slot) + string_elements(value),
+                   loc(at));
+  *slot = std::move(value);
+}
+
+std::size_t Parser::Impl::string_elements(const Value& value) {
+  const auto* text = value.get<std::string>();
+  return text ? text->size() / kStringBytesPerElement : 0;
+}
+
+void Parser::Impl::check_element_budget(std::size_t more, const SourceLoc& at) const {
+  const std::size_t budget = options.max_live_array_elements;
+  if (more > budget - std::min<std::size_t>(live_array_elements->load(), budget)) {
+    fail(at, "the scene's arrays, strings and meshes would hold more than " +
+                 std::to_string(budget) +
+                 " elements in all (an array of arrays counts every element of each, a string "
+                 "in an array one more per " +
+                 std::to_string(kStringBytesPerElement) +
+                 " characters, a mesh one per vertex, normal, texture and face)");
+  }
+}
+
+ElementCount Parser::Impl::reserve_elements(std::size_t count, TokenRef at) {
+  check_element_budget(count, loc(at));
   return ElementCount(live_array_elements, count);
+}
+
+void Parser::Impl::recount_elements(ElementCount& held, std::size_t count, const SourceLoc& at) {
+  if (count > held.count()) check_element_budget(count - held.count(), at);
+  held = ElementCount(live_array_elements, count);
 }
 
 }  // namespace convray::sdl

@@ -180,7 +180,7 @@ void Parser::Impl::directive_declare(bool local, TokenRef) {
     Value* root = lookup(name);
     if (root == nullptr)
       fail(name_at, "'" + name + "' was undeclared while its value was computed");
-    *element_at(*root, path, true, name, name_at) = std::move(value);
+    store_element(*root, path, std::move(value), name, name_at);
     accept_optional_semicolon();
     return;
   }

@@ -113,6 +113,9 @@ scene::ObjectPtr parse_mesh(Parser& parser) {
         ++dropped;  // POV-Ray drops these too
         return true;
       }
+      // Its corners, normals, texture and face, in the scene's element budget.
+      const std::size_t elements = (triangle.smooth ? 7 : 4) + (triangle.texture ? 1 : 0);
+      parser.count_mesh_elements(mesh.counted, mesh.counted.count() + elements, triangle.loc);
       int texture = -1;
       if (triangle.texture) {
         texture = int(mesh.textures.size());

@@ -13,9 +13,12 @@ namespace convray::sdl::items {
 
 namespace {
 
-// Reads `NAME { n, item, item, ... }` with `read_item` and checks the count.
+// Reads `NAME { n, item, item, ... }` with `read_item` and checks the count; each item read
+// counts one element in `counted` (the scene's budget, not the declared n: a count of 10^9 with
+// nothing behind it takes no memory).
 template <class ReadItem>
-void parse_counted_list(Parser& parser, const std::string& name, ReadItem read_item) {
+void parse_counted_list(Parser& parser, ElementCount& counted, const std::string& name,
+                        ReadItem read_item) {
   const SourceLoc loc = take_keyword(parser);
   Block block(parser, name, loc);
   // The float reader stops at a '<': `14 <-1, -1, -1>` is a count and a first vector, not
@@ -30,6 +33,7 @@ void parse_counted_list(Parser& parser, const std::string& name, ReadItem read_i
   while (true) {
     parser.accept_comma();
     if (!block.more()) break;
+    parser.count_mesh_elements(counted, counted.count() + 1, parser.peek().loc);
     read_item(listed);
     ++listed;
   }
@@ -58,10 +62,11 @@ struct Mesh2Lists {
   std::vector<std::array<int, 3>> faces, normal_faces;
   std::vector<int> face_textures;  // -1: none
   bool has_normal_indices = false;
+  ElementCount counted;  // every item of every list, in the scene's element budget
 };
 
 void parse_face_indices(Parser& parser, Mesh2Lists& lists) {
-  parse_counted_list(parser, "face_indices", [&](int index) {
+  parse_counted_list(parser, lists.counted, "face_indices", [&](int index) {
     lists.faces.push_back(index_triple(parser, "face " + std::to_string(index)));
     int texture = -1;
     parser.accept_comma();
@@ -85,13 +90,13 @@ void parse_face_indices(Parser& parser, Mesh2Lists& lists) {
 
 void parse_mesh2_lists(Parser& parser, Mesh2Lists& lists, const std::string& word) {
   if (word == "vertex_vectors") {
-    parse_counted_list(parser, word,
+    parse_counted_list(parser, lists.counted, word,
                        [&](int) { lists.vertices.push_back(vector_param(parser, "a vertex")); });
   } else if (word == "normal_vectors") {
-    parse_counted_list(parser, word,
+    parse_counted_list(parser, lists.counted, word,
                        [&](int) { lists.normals.push_back(vector_param(parser, "a normal")); });
   } else if (word == "texture_list") {
-    parse_counted_list(parser, word, [&](int) {
+    parse_counted_list(parser, lists.counted, word, [&](int) {
       if (!at_word(parser, "texture")) parser.fail_here("expected a texture in texture_list");
       lists.textures.push_back(
           std::make_shared<const scene::Texture>(parse_texture(parser, parser.defaults().texture)));
@@ -100,7 +105,7 @@ void parse_mesh2_lists(Parser& parser, Mesh2Lists& lists, const std::string& wor
     parse_face_indices(parser, lists);
   } else if (word == "normal_indices") {
     lists.has_normal_indices = true;
-    parse_counted_list(parser, word, [&](int index) {
+    parse_counted_list(parser, lists.counted, word, [&](int index) {
       lists.normal_faces.push_back(
           index_triple(parser, "normals of face " + std::to_string(index)));
     });
@@ -130,6 +135,7 @@ scene::TriangleMesh build_mesh2(Parser& parser, const SourceLoc& loc, Mesh2Lists
     parser.fail(loc, "mesh2: normal_indices must list as many faces as face_indices");
   }
   scene::TriangleMesh mesh;
+  mesh.counted = std::move(lists.counted);
   mesh.vertices = std::move(lists.vertices);
   mesh.normals = std::move(lists.normals);
   mesh.textures = std::move(lists.textures);

@@ -95,6 +95,10 @@ scene::ObjectPtr parse_object_body(Parser& parser, Block& block, scene::ObjectPt
   }
   // Without modifiers the declared record is shared as it is (a mesh is not copied).
   if (!block.more()) return base;
+  if (const auto* mesh = std::get_if<scene::TriangleMesh>(&base->shape)) {
+    // The copy holds the mesh's lists again (TriangleMesh::counted): checked before it is made.
+    parser.check_element_budget(mesh->counted.count(), block.loc());
+  }
   scene::Object copy = *base;
   copy.loc = block.loc();
   ObjectBuilder builder(parser, std::move(copy));

@@ -13,6 +13,7 @@
 #include "sdl/items.hpp"
 #include "sdl/keywords.hpp"
 #include "sdl/parser_impl.hpp"
+#include "util/file_kind.hpp"
 #include "util/printable.hpp"
 
 namespace convray::sdl {
@@ -30,21 +31,10 @@ bool read_file(const std::string& path, std::string& text) {
 
 namespace {
 
-std::string describe_file_kind(const std::filesystem::file_status& status) {
-  namespace fs = std::filesystem;
-  switch (status.type()) {
-    case fs::file_type::directory: return "a folder";
-    case fs::file_type::fifo: return "a named pipe";
-    case fs::file_type::character: return "a character device";
-    case fs::file_type::block: return "a block device";
-    case fs::file_type::socket: return "a socket";
-    default: return "not a regular file";
-  }
-}
-
-// Declare=ID=VALUE from the command line names an identifier: a reserved word there would be
-// shadowed by the keyword in every use, so it is refused rather than silently ignored.
-void check_declared_name(const std::string& name) {
+// Declare=ID=VALUE from the command line names an identifier. A name that is not one is
+// refused; a reserved word is shadowed by the keyword in every use, so POV-Ray accepts it and
+// nothing can read it: convray accepts it too, and says so (`warning`, returned).
+std::optional<std::string> check_declared_name(const std::string& name) {
   const SourceLoc where{"command line"};
   const bool letters = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) ||
                                          name[0] == '_');
@@ -56,9 +46,11 @@ void check_declared_name(const std::string& name) {
                                 "' is not an identifier (a letter or _, then letters, digits, _)");
   }
   if (classify_word(name) != Word::none) {
-    throw InputError(where, "Declare=" + name + ": '" + name +
-                                "' is a reserved word of the scene language, not an identifier");
+    return "Declare=" + name + ": '" + name +
+           "' is a reserved word of the scene language, so the scene cannot read this "
+           "declaration (POV-Ray ignores it too); ignored";
   }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -69,7 +61,10 @@ Parser::Impl::Impl(Parser& owner_parser, ParseOptions parse_options)
     : owner(owner_parser), options(std::move(parse_options)) {
   push_scope();  // the global scope
   for (const auto& [name, value] : options.declares) {
-    check_declared_name(name);
+    if (const std::optional<std::string> warning = check_declared_name(name)) {
+      warn(SourceLoc{"command line"}, *warning);
+      continue;
+    }
     declare_global(name, make_value(value));
   }
 }
@@ -181,7 +176,8 @@ Parser::Parser(std::string file_name, std::string text, ParseOptions options)
   std::unique_ptr<SourceFile> file = tokenize(std::move(file_name), std::move(text));
   Impl& impl = *impl_;
   impl.allow_reads_for(file->name);
-  impl.warnings = std::move(file->warnings);
+  // After the command line's (Declare=), the lexer's.
+  for (std::string& warning : file->warnings) impl.warnings.push_back(std::move(warning));
   file->warnings.clear();
   impl.files_by_name.emplace(file->name, file.get());
   const SourceFile& scene = *file;
@@ -351,6 +347,14 @@ std::string Parser::resolve_file(const std::string& name, const SourceLoc& loc,
   return impl_->resolve(name, loc, true);  // fails, saying where it looked
 }
 
+void Parser::count_mesh_elements(ElementCount& held, std::size_t count, const SourceLoc& loc) {
+  impl_->recount_elements(held, count, loc);
+}
+
+void Parser::check_element_budget(std::size_t more, const SourceLoc& loc) const {
+  impl_->check_element_budget(more, loc);
+}
+
 void Parser::fail(const SourceLoc& loc, const std::string& message) const {
   impl_->fail(loc, message);
 }
@@ -382,6 +386,9 @@ Parser::NestingGuard::~NestingGuard() { parser_.impl_->leave_nesting(); }
 // --- Whole scenes -------------------------------------------------------------------------
 
 ParseResult parse_file(const std::string& path, const ParseOptions& options) {
+  if (const std::optional<std::string> kind = not_a_file(path)) {
+    throw InputError({path}, "cannot read the scene file: it " + *kind);
+  }
   std::string text;
   if (!read_file(path, text)) throw InputError({path}, "cannot read the scene file");
   return parse_string(text, path, options);

@@ -101,6 +101,13 @@ class Parser {
   std::string resolve_file(const std::string& name, const SourceLoc& loc,
                            const std::string& file_type) const;
 
+  // Makes `held` count `count` elements of a mesh built in the scene (one per vertex, normal,
+  // texture and face), in the one budget of the scene's arrays, strings and meshes
+  // (ParseOptions::max_live_array_elements); fails at `loc` beyond it.
+  void count_mesh_elements(ElementCount& held, std::size_t count, const SourceLoc& loc);
+  // Fails at `loc` when `more` elements would take that budget past its limit.
+  void check_element_budget(std::size_t more, const SourceLoc& loc) const;
+
   // Errors and warnings, with the source line and a caret when the location has one.
   [[noreturn]] void fail(const SourceLoc& loc, const std::string& message) const;
   [[noreturn]] void fail_here(const std::string& message);  // at peek()

@@ -189,7 +189,7 @@ struct Parser::Impl {
   long long tokens_read = 0;
   // The elements of every live array (sdl::ElementCount), against
   // ParseOptions::max_live_array_elements.
-  std::shared_ptr<std::size_t> live_array_elements = std::make_shared<std::size_t>(0);
+  ElementCount::Live live_array_elements = std::make_shared<std::atomic<std::size_t>>(0);
 
   // The settled token and the public Token made from it, valid until the stream moves.
   bool settled = false;
@@ -217,6 +217,12 @@ struct Parser::Impl {
   // ParseOptions::max_live_array_elements; otherwise returns their count, for the new array
   // to hold.
   ElementCount reserve_elements(std::size_t count, TokenRef at);
+  // Makes `held` count `count` elements, failing at `at` when the growth would take the budget
+  // past ParseOptions::max_live_array_elements.
+  void recount_elements(ElementCount& held, std::size_t count, const SourceLoc& at);
+  void check_element_budget(std::size_t more, const SourceLoc& at) const;
+  // What a value held in an array counts beyond its element: a long string's characters.
+  static std::size_t string_elements(const Value& value);
   void moved() {
     settled = false;
     materialized = false;
@@ -366,6 +372,10 @@ struct Parser::Impl {
   std::vector<std::size_t> parse_element_path(const Value& root, std::string_view name);
   Value* element_at(Value& root, const std::vector<std::size_t>& path, bool for_write,
                     std::string_view name, TokenRef at);
+  // `#declare A[i]... = value`: the element written (unsharing arrays on the way), a long
+  // string counted in the element budget.
+  void store_element(Value& root, const std::vector<std::size_t>& path, Value value,
+                     std::string_view name, TokenRef at);
 
   // --- symbols.cpp
   Value* lookup(std::string_view name);

@@ -65,7 +65,7 @@ void Parser::Impl::store_through(const Alias& alias, Value value, TokenRef at) {
     if (found == scope->values.end()) {
       fail(at, quoted(alias.name) + ", whose element was passed to the macro, is undeclared");
     }
-    *element_at(found->second, alias.element, true, alias.name, at) = std::move(value);
+    store_element(found->second, alias.element, std::move(value), alias.name, at);
     return;
   }
 }

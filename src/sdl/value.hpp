@@ -13,6 +13,7 @@
 #include "scene/scene.hpp"
 #include "scene/texture.hpp"
 #include "scene/transform.hpp"
+#include "util/element_count.hpp"
 #include "util/error.hpp"
 
 namespace convray::sdl {
@@ -36,42 +37,6 @@ struct UnsupportedItem {
   SourceLoc feature_at;
 };
 
-// The elements of a parse's live arrays, counted against one budget (nested arrays count every
-// element): an array holds its count while it lives, a copy holds it again. The parser checks
-// the budget before it makes or copies an array (Parser::Impl::reserve_elements).
-class ElementCount {
- public:
-  ElementCount() = default;
-  ElementCount(std::shared_ptr<std::size_t> live, std::size_t count)
-      : live_(std::move(live)), count_(count) {
-    if (live_) *live_ += count_;
-  }
-  ElementCount(const ElementCount& other) : ElementCount(other.live_, other.count_) {}
-  ElementCount& operator=(const ElementCount& other) {
-    if (this != &other) *this = ElementCount(other);
-    return *this;
-  }
-  ElementCount& operator=(ElementCount&& other) noexcept {
-    release();
-    live_ = std::move(other.live_);
-    count_ = other.count_;
-    other.count_ = 0;
-    return *this;
-  }
-  ElementCount(ElementCount&& other) noexcept : live_(std::move(other.live_)), count_(other.count_) {
-    other.count_ = 0;
-  }
-  ~ElementCount() { release(); }
-
- private:
-  void release() {
-    if (live_) *live_ -= count_;
-    count_ = 0;
-  }
-  std::shared_ptr<std::size_t> live_;
-  std::size_t count_ = 0;
-};
-
 struct Value;
 struct Array {
   std::vector<int> dimensions;  // #declare A = array[2][3]: {2, 3}
@@ -80,6 +45,10 @@ struct Array {
 };
 
 using ColorMap = std::vector<scene::ColorMapEntry>;
+
+// A string held in an array counts one element more per this many characters (about the
+// memory of one array element).
+inline constexpr std::size_t kStringBytesPerElement = 96;
 
 struct Value {
   std::variant<std::monostate,                            // not (yet) set

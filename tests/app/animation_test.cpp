@@ -132,6 +132,22 @@ TEST(AnimationPlan, StillClockIsIgnoredByAnAnimation) {
   EXPECT_DOUBLE_EQ(p.frames[1].clock, 0.25);
 }
 
+// Ten million frames (the most one run renders) are computed as they are asked for: the plan
+// is a few numbers, and its frames are POV-Ray's (clock = (n - 1) / (10^7 - 1), every third
+// frame with Frame_Step=3).
+TEST(AnimationPlan, TenMillionFramesWithoutAList) {
+  const FramePlan p = plan({"+KFF10000000"});
+  ASSERT_EQ(p.frames.size(), 10'000'000u);
+  EXPECT_LT(sizeof(FramePlan), 512u);
+  EXPECT_EQ(p.frames[9'999'999].frame_number, 10'000'000);
+  EXPECT_EQ(p.frames[9'999'999].clock, 1.0);
+  EXPECT_DOUBLE_EQ(p.frames[4'999'999].clock, 4'999'999.0 / 9'999'999.0);
+  EXPECT_EQ(p.frames[0].clock, 0.0);
+  const FramePlan stepped = plan({"+KFF10000000", "Frame_Step=3"});
+  EXPECT_EQ(stepped.frames.size(), 3'333'334u);  // 1, 4, ..., 10^7
+  EXPECT_EQ(stepped.frames[3'333'333].frame_number, 10'000'000);
+}
+
 TEST(AnimationPlan, WhereWeDifferFromPovRaysDefects) {
   // One frame: POV-Ray's clock is NaN; ours is the initial clock.
   FramePlan one = plan({"+KFF1", "+KI0.5"});

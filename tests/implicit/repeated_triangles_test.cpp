@@ -1,16 +1,19 @@
 // Repeated triangles: found against a brute-force comparison of every pair's corner sets,
 // and a surface that merges them gives the field of the unmerged sum, each triangle's closed
 // form added once per occurrence (field::triangle_field, independent of the merge).
+#include "implicit/repeated_triangles.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 
+#include "field/cauchy.hpp"
+#include "field/threshold.hpp"
 #include "field/triangle.hpp"
+#include "implicit/cauchy_surface.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/mesh_field.hpp"
-#include "implicit/repeated_triangles.hpp"
-#include "field/threshold.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -126,6 +129,42 @@ TEST(RepeatedTriangles, MergedMeshFieldHasTheFieldOfTheUnmergedSum) {
       EXPECT_NEAR(field.field_exact(p).value, sum.value, tolerance) << k;
       EXPECT_LT(glm::length(field.field(p).gradient - sum.gradient),
                 1e-10 * (1.0 + glm::length(sum.gradient)));
+    }
+  }
+}
+
+// The Cauchy kernel's surface merges copies too: its truncated field against the unmerged sum
+// of the closed forms (field::cauchy_triangle_field), each triangle's term kept where the point
+// lies in that triangle's box grown by the truncation radius, as the kernel's truncation reads.
+TEST(RepeatedTriangles, MergedCauchySurfaceHasTheFieldOfTheUnmergedSum) {
+  std::mt19937_64 rng(8);
+  const std::vector<Triangle> soup = soup_with_copies(rng, 40);
+  const double sharpness = 2.0, strength = 0.7;
+  for (const double radius : {0.3, 100.0}) {  // truncated, and every term everywhere
+    scene::ConvolutionObject object;
+    object.kernel = {field::KernelType::cauchy, sharpness};
+    object.meshes.push_back({soup, {strength, radius}});
+    object.threshold = 0.5;
+    const CauchySurface surface(object);
+    EXPECT_EQ(surface.merged_triangle_count(),
+              soup.size() - merge_repeated(soup)->triangles.size());
+    std::uniform_real_distribution<double> u(-1.2, 1.2);
+    for (int k = 0; k < 200; ++k) {
+      const Vec3 p(u(rng), u(rng), u(rng));
+      field::FieldSample sum;
+      for (const Triangle& t : soup) {
+        const Vec3 lo = glm::min(glm::min(t.a, t.b), t.c) - Vec3(radius);
+        const Vec3 hi = glm::max(glm::max(t.a, t.b), t.c) + Vec3(radius);
+        const bool degenerate = glm::length(glm::cross(t.b - t.a, t.c - t.a)) == 0.0;
+        if (degenerate || glm::any(glm::lessThan(p, lo)) || glm::any(glm::greaterThan(p, hi))) {
+          continue;
+        }
+        sum += field::cauchy_triangle_field(p, t, sharpness) * strength;
+      }
+      const field::FieldSample got = surface.field(p);
+      EXPECT_NEAR(got.value, sum.value, 1e-12 * (1.0 + std::abs(sum.value))) << k;
+      EXPECT_LT(glm::length(got.gradient - sum.gradient), 1e-11 * (1.0 + glm::length(sum.gradient)))
+          << k;
     }
   }
 }

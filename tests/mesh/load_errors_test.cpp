@@ -1,6 +1,7 @@
 // Every malformed input is an InputError that names the file, says what is wrong and, where
 // it applies, the element (counted from 0) and the line.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "mesh/load.hpp"
 #include "mesh/procedural.hpp"
@@ -230,13 +231,50 @@ TEST(LoadErrors, Directory) {
   testing::ScratchDirectory scratch;
   std::filesystem::create_directory(scratch.file("folder.ply"));
   EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("folder.ply")); }),
-            scratch.file("folder.ply") + ": cannot read the file: it is a directory");
+            scratch.file("folder.ply") + ": cannot read the file: it is a folder, not a file");
+}
+
+// A named pipe would wait for a writer, /dev/zero would never end, a loop of links has no file
+// at its end: each named for what it is before anything is opened.
+TEST(LoadErrors, PipesDevicesAndLinkLoops) {
+  testing::ScratchDirectory scratch;
+  ASSERT_EQ(::mkfifo(scratch.file("pipe.ply").c_str(), 0600), 0);
+  std::filesystem::create_symlink("/dev/zero", scratch.file("zero.ply"));
+  std::filesystem::create_symlink(scratch.file("b.ply"), scratch.file("a.ply"));
+  std::filesystem::create_symlink(scratch.file("a.ply"), scratch.file("b.ply"));
+  EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("pipe.ply")); }),
+            scratch.file("pipe.ply") + ": cannot read the file: it is a named pipe, not a file");
+  EXPECT_EQ(
+      input_error_of([&] { load_mesh(scratch.file("zero.ply")); }),
+      scratch.file("zero.ply") + ": cannot read the file: it is a character device, not a file");
+  EXPECT_EQ(input_error_of([&] { load_mesh(scratch.file("a.ply")); }),
+            scratch.file("a.ply") + ": cannot read the file: it is a loop of symbolic links");
 }
 
 TEST(LoadErrors, EmptyFile) {
   for (const char* name : {"empty.obj", "empty.ply", "empty.stl", "empty.off", "empty.ply.gz"}) {
     EXPECT_EQ(error_loading("", name), std::string(name) + ": the file is empty");
   }
+}
+
+// A face is counted once however many triangles it has: one 255-corner face (the most a PLY
+// list with a uchar count holds) naming one vertex 255 times, or with its corners on a line.
+TEST(LoadErrors, ADroppedPolygonIsOneFace) {
+  std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 255\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string vertices, repeated = "255", line = "255";
+  for (int i = 0; i < 255; ++i) {
+    vertices += std::to_string(i) + " 0 0\n";
+    repeated += " 0";
+    line += " " + std::to_string(i);
+  }
+  EXPECT_EQ(error_loading(header + vertices + repeated + "\n", "repeated.ply"),
+            "repeated.ply: nothing left to render: all 1 faces are degenerate (0 with zero area, 1 "
+            "with a repeated vertex)");
+  EXPECT_EQ(error_loading(header + vertices + line + "\n", "line.ply"),
+            "line.ply: nothing left to render: all 1 faces are degenerate (1 with zero area, 0 "
+            "with a repeated vertex)");
 }
 
 TEST(LoadErrors, NothingToRender) {

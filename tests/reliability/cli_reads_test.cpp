@@ -3,6 +3,7 @@
 // POV-Ray's includes, the output folder; --allow-read widens them), and scene text printed
 // with its control characters escaped and its long tokens cut.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -103,12 +104,41 @@ TEST_F(SceneReads, MeshesFollowTheSameRuleAndSymlinksDoNotEscapeIt) {
   EXPECT_EQ(render("scene").exit_code, 0);
 }
 
-TEST_F(SceneReads, FoldersAndPipesAreNamedForWhatTheyAre) {
-  fs::create_directories(dir_ / "scene" / "dir.inc");
-  write_scene("#include \"dir.inc\"\n");
-  const testing::CliRun run = render("scene");
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.err.find("is a folder, not a file"), std::string::npos) << run.err;
+// A folder, a named pipe, a device (through a link to /dev/zero) and a loop of links, given as
+// an include, as a scene's mesh, as the mesh of quick and info, and as the scene: each named
+// for what it is, exit 2, at once (neither waiting for the pipe's writer nor reading /dev/zero
+// forever), never "file not found".
+TEST_F(SceneReads, FoldersPipesDevicesAndLinkLoopsAreNamedForWhatTheyAre) {
+  fs::create_directories(dir_ / "scene" / "folder.obj");
+  ASSERT_EQ(::mkfifo(file("scene/pipe.obj").c_str(), 0600), 0);
+  fs::create_symlink("/dev/zero", dir_ / "scene" / "zero.obj");
+  fs::create_symlink("loop2.obj", dir_ / "scene" / "loop1.obj");
+  fs::create_symlink("loop1.obj", dir_ / "scene" / "loop2.obj");
+  const std::pair<std::string, std::string> kinds[] = {
+      {"folder.obj", "is a folder, not a file"},
+      {"pipe.obj", "is a named pipe, not a file"},
+      {"zero.obj", "is a character device, not a file"},
+      {"loop1.obj", "is a loop of symbolic links"}};
+  auto expect_named = [&](const std::string& arguments, const std::string& what) {
+    bool timed_out = false;
+    const testing::CliRun run =
+        run_convray_limited(arguments, uint64_t(4) << 30, 30, "", &timed_out);
+    EXPECT_FALSE(timed_out) << arguments;
+    EXPECT_EQ(run.exit_code, 2) << arguments << "\n" << run.err;
+    EXPECT_NE(run.err.find(what), std::string::npos) << arguments << "\n" << run.err;
+    EXPECT_EQ(run.err.find("not found"), std::string::npos) << run.err;
+  };
+  for (const auto& [name, what] : kinds) {
+    for (const std::string& body :
+         {"#include \"" + name + "\"\n",
+          "convolution { radius 0.25 mesh { \"" + name + "\" } pigment { rgb 1 } }\n"}) {
+      write_scene(body);
+      expect_named("scene/s.pov -o out/s.png +W16 +H12 --allow-read-anywhere", what);
+    }
+    expect_named("quick scene/" + name + " --size 16x12 -o out/q.png", what);
+    expect_named("info scene/" + name, what);
+    expect_named("scene/" + name + " -o out/s.png +W16 +H12", what);
+  }
 }
 
 TEST_F(SceneReads, SceneTextReachesTheTerminalEscaped) {

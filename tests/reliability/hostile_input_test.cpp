@@ -166,15 +166,53 @@ TEST_F(HostileInput, JobsThatCannotFitAreRefusedUnlessForced) {
   }
 }
 
-// Ten million frames pass the frame limit, but their plan does not fit under the cap: said
-// when the command line is read, before any frame.
-TEST_F(HostileInput, AnAnimationWhosePlanCannotFitIsReportedBeforeAnyFrame) {
-  const testing::CliRun r =
-      run(kSoupScene + " +KFI1 +KFF9999999 +W32 +H24 --list-frames -o f.png");
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_EQ(r.err, "convray: out of memory while planning the frames: give fewer frames (+KFI, "
-                   "+KFF)\n");
-  EXPECT_TRUE(r.out.empty());
+// Ten million frames are planned in a few numbers, not a list (800 MB, past the cap): the run
+// gets past planning to the scene, whose error it reports. --force skips the disk estimate.
+TEST_F(HostileInput, TenMillionFramesArePlannedInBoundedMemory) {
+  std::ofstream(file("broken.pov")) << "sphere { 0, 1 pigment { rgb 1 } \n";
+  const testing::CliRun r = run("broken.pov +KFI1 +KFF9999999 +W32 +H24 --force -o f.png");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.find("out of memory"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("broken.pov:"), std::string::npos) << r.err;
+}
+
+// A number of bytes as byte_size writes it ("51.5 GB"), back to bytes.
+double bytes_of(const std::string& text) {
+  std::istringstream in(text);
+  double value = 0;
+  std::string unit;
+  in >> value >> unit;
+  const std::vector<std::string> units = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
+  const auto found = std::find(units.begin(), units.end(), unit);
+  return value * std::pow(1000.0, double(found - units.begin()));
+}
+
+// Frames that cannot fit on the disk are refused before the first, with the space they may
+// need (each frame uncompressed: 2000 x 3 bytes + a filter byte per row, 2000 rows, 4 KiB of
+// headers) and the space free, which df reports too; --force skips the estimate.
+TEST_F(HostileInput, AnAnimationThatCannotFitOnTheDiskIsRefusedBeforeAnyFrame) {
+  const testing::CliRun r = run(kSoupScene + " +KFI1 +KFF9999999 +W2000 +H2000 -o f.png");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  const std::string start = "convray: the 9999999 frames of 2000x2000 may need up to ";
+  ASSERT_EQ(r.err.rfind(start, 0), 0u) << r.err;
+  const double per_frame = (2000.0 * 3 + 1) * 2000 + 4096;
+  EXPECT_NEAR(bytes_of(r.err.substr(start.size())), 9999999 * per_frame,
+              0.001 * 9999999 * per_frame);
+  EXPECT_NE(r.err.find("on disk (12 MB a frame, uncompressed)"), std::string::npos) << r.err;
+  const size_t free_at = r.err.find("more than the ");
+  ASSERT_NE(free_at, std::string::npos) << r.err;
+  // df's figure for the same folder, in bytes available to this user.
+  ASSERT_EQ(std::system(("df -B1 --output=avail '" + dir_.string() + "' | tail -1 > '" +
+                         file("df.txt") + "'")
+                            .c_str()),
+            0);
+  const double df_free = std::stod(testing::read_file(file("df.txt")));
+  EXPECT_NEAR(bytes_of(r.err.substr(free_at + 14)), df_free, 0.01 * df_free + 1e7) << r.err;
+  EXPECT_NE(r.err.find("give fewer frames (+KFI, +KFF, +SF, +EF, Frame_Step), a smaller +W and "
+                       "+H or another output folder, or --force to try anyway"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(file("f0000001.png")));
 }
 
 // Points without a line break: refused at the line instead of read into memory whole.

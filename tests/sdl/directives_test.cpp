@@ -257,35 +257,5 @@ TEST(Arrays, Errors) {
   EXPECT_EQ(failure.first_line, "array too large (more than 2097152 elements)");
 }
 
-// Arrays of arrays: every element of every live array counts against one budget (here 1000),
-// so the fourth array of 300 inside an array of 20 is refused where it is made; arrays no
-// longer held give their elements back, and a copy (made when a shared array is written)
-// holds them again.
-TEST(Directives, LiveArraysShareOneElementBudget) {
-  ParseOptions options;
-  options.max_live_array_elements = 1000;
-  const std::string outer = "#declare A = array[20];\n";
-  core_testing::Failure failure =
-      scene_error(outer + "#for (I, 0, 19)\n  #declare A[I] = array[300];\n#end\n", options);
-  EXPECT_EQ(failure.first_line,
-            "the scene's arrays would hold more than 1000 elements in all (an array of arrays "
-            "counts every element of each)");
-  EXPECT_EQ(failure.loc.line, 3);
-  EXPECT_EQ(failure.loc.column, 19);
-  // 50 arrays of 400 made one after another, each replacing the last: at most two live.
-  EXPECT_EQ(declared("#for (I, 1, 50) #declare B = array[400]; #end #declare N = "
-                     "dimension_size(B, 1);",
-                     "N", options),
-            400.0);
-  failure = scene_error(outer + "#for (I, 0, 2) #declare A[I] = array[300]; #end\n"
-                                "#declare B = A[0];\n#declare B[0] = 1;\n",
-                        options);
-  EXPECT_EQ(failure.loc.line, 4);  // 20 + 3 x 300 live; the copy of 300 would pass 1000
-  EXPECT_EQ(declared(outer + "#for (I, 0, 2) #declare A[I] = array[300]; #end\n"
-                             "#declare B = A[0];\n#declare N = dimension_size(B, 1);",
-                     "N", options),
-            300.0);  // shared, not copied: still within the budget
-}
-
 }  // namespace
 }  // namespace convray::sdl
