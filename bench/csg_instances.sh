@@ -96,8 +96,9 @@ for case in $cases; do
   members=${BASH_REMATCH[1]}
   placements=${BASH_REMATCH[2]}
   name="instances_${members}x${placements}"
-  printf '#declare Members = %d;\n#declare Placements = %d;\n#declare Textured = %d;\n#include "csg_instances.inc"\n' \
-    "$members" "$placements" "$textured" > "$out/$name.pov"
+  printf '#declare %s = %d;\n' Members "$members" Placements "$placements" \
+    Textured "$textured" > "$out/$name.pov"
+  echo '#include "csg_instances.inc"' >> "$out/$name.pov"
   ours=$(timed "${name}_convray.log" "$convray" "+I$name.pov" "+O${name}_convray.png" \
            $switches --stats)
   row="| $members x $placements | $ours | $(phase "${name}_convray.log" parse) |"
@@ -112,6 +113,7 @@ for case in $cases; do
   psnr=$( (idiff -a "$out/${name}_povray.png" "$out/${name}_convray.png" 2>&1 || true) |
            awk '/Peak SNR/ {print $4; found = 1} /^PASS/ && !found {print "identical"}')
   [[ -n $psnr ]] || psnr="-"
-  ratio=$(awk -v a="$ours" -v b="$theirs" 'BEGIN { if (a ~ />/ || b ~ />/) print "-"; else printf "%.2f", a / b }')
+  ratio=$(awk -v a="$ours" -v b="$theirs" \
+            'BEGIN { if (a ~ />/ || b ~ />/) print "-"; else printf "%.2f", a / b }')
   echo "$row $theirs | $ratio | $psnr |" | tee -a "$table"
 done

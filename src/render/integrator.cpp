@@ -141,7 +141,8 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, const Vec3& outwar
                                const HitPoint& hit, const RayState& state,
                                RenderStats& stats) const {
   Vec3 color(0.0);
-  for_each_texture(texture, hit.texture_point, 1.0, [&](const scene::Texture& plain, double weight) {
+  const Vec3& at = hit.texture_point;
+  for_each_texture(texture, at, 1.0, [&](const scene::Texture& plain, double weight) {
     HitPoint own = hit;
     color += weight * shade_layer(plain, outward, own, state, stats);
   });
