@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "geometry/box.hpp"
 #include "geometry/conic_prism.hpp"
@@ -14,6 +15,7 @@
 #include "geometry/polygon.hpp"
 #include "geometry/sor.hpp"
 #include "geometry/implicit_shape.hpp"
+#include "geometry/instance.hpp"
 #include "geometry/isosurface.hpp"
 #include "geometry/lathe.hpp"
 #include "geometry/modifiers.hpp"
@@ -26,6 +28,8 @@
 #include "geometry/transformed.hpp"
 #include "geometry/triangle_mesh.hpp"
 #include "geometry/world.hpp"
+#include "scene/instance.hpp"
+#include "scene/moved_textures.hpp"
 
 namespace convray::geometry {
 namespace {
@@ -55,8 +59,10 @@ void require(bool ok, const char* message) {
 
 class ShapeBuilder {
  public:
-  ShapeBuilder(implicit::SupportCache* cache, implicit::Tracer tracer)
-      : cache_(cache), tracer_(tracer) {}
+  // `shared` (optional) keeps the shared unions of instances for the whole World.
+  ShapeBuilder(implicit::SupportCache* cache, implicit::Tracer tracer,
+               SharedUnions* shared = nullptr)
+      : cache_(cache), tracer_(tracer), shared_(shared) {}
   // `placement` follows the object's own transform (a split union's, when it is a member).
   ShapePtr build(const scene::Object& object, const Inherited& parent,
                  const scene::Transform& placement = {});
@@ -67,6 +73,10 @@ class ShapeBuilder {
 
  private:
   ShapePtr build_primitive(const scene::Object& object, const Inherited& own);
+  ShapePtr instance_shape(const scene::Object& instance, const Inherited& parent,
+                          const scene::Transform& placement);
+  std::shared_ptr<const Shape> shared_union(const scene::ObjectPtr& declared,
+                                            const Inherited& own);
   SurfaceInfoPtr surface_for(const Inherited& own) const;
 
   ShapePtr make(const scene::Sphere& s, const Inherited& own) const;
@@ -106,6 +116,7 @@ class ShapeBuilder {
       std::make_shared<const scene::Texture>(scene::default_texture());
   implicit::SupportCache* cache_;  // for convolution objects' meshes; may be null
   implicit::Tracer tracer_;        // how quartic-kernel convolution surfaces are traced
+  SharedUnions* shared_;           // null: instances are flattened (copied)
   // The last surface made: the members of a union mostly share one (memory for 10^6 members).
   mutable SurfaceInfoPtr last_surface_;
 };
@@ -284,6 +295,14 @@ bool splits(const scene::Object& object) {
 
 void ShapeBuilder::split(const scene::Object& object, const Inherited& parent,
                          const scene::Transform& placement, std::vector<ShapePtr>& out) {
+  if (object.instance) {
+    if (ShapePtr shape = instance_shape(object, parent, placement)) {
+      out.push_back(std::move(shape));
+    } else {
+      split(scene::flattened(object), parent, placement, out);
+    }
+    return;
+  }
   if (!splits(object)) {
     out.push_back(build(object, parent, placement));
     return;
@@ -293,6 +312,67 @@ void ShapeBuilder::split(const scene::Object& object, const Inherited& parent,
   for (const scene::ObjectPtr& child : std::get<scene::Csg>(object.shape).children) {
     if (child) split(*child, own, members_placement, out);
   }
+}
+
+bool depends_on_position(const scene::TexturePtr& texture) {
+  return texture && scene::depends_on_position(*texture);
+}
+
+// Whether every surface in `object` wears a texture of its own or of a CSG parent inside it:
+// then no texture it inherits from outside shows.
+bool wears_own_textures(const scene::Object& object) {
+  if (object.texture) return true;
+  const auto* csg = std::get_if<scene::Csg>(&object.shape);
+  if (!csg) return false;
+  for (const scene::ObjectPtr& child : csg->children) {
+    if (child && !wears_own_textures(*child)) return false;
+  }
+  return true;
+}
+
+InheritedState state_of(const Inherited& own) {
+  const unsigned flags = (own.no_shadow ? 1u : 0u) | (own.no_image ? 2u : 0u) |
+                         (own.no_reflection ? 4u : 0u) | (own.double_illuminate ? 8u : 0u) |
+                         (own.hollow ? 16u : 0u);
+  return {own.texture, own.interior_texture, own.interior, flags};
+}
+
+// A placement of a shared union in the scene's hierarchy: one shape over the union's members,
+// built once. Null where the placement must be the copy instead: when no World keeps shared
+// unions (a lone object's shape, or inside a shared union being built: crossings name one
+// placement, not a chain of them), or when some member would wear an inherited texture that
+// depends on where it is (a patterned texture from outside is in the world's space, not the
+// union's).
+ShapePtr ShapeBuilder::instance_shape(const scene::Object& instance, const Inherited& parent,
+                                      const scene::Transform& placement) {
+  if (!shared_) return nullptr;
+  scene::Transform to_parent;
+  const scene::ObjectPtr& declared = scene::shared_union(instance, to_parent);
+  Inherited own = inherit(instance, parent);
+  if (wears_own_textures(*declared)) own.texture = nullptr;  // nothing wears it
+  if (depends_on_position(own.texture) || depends_on_position(own.interior_texture)) {
+    return nullptr;
+  }
+  std::shared_ptr<const Shape> shared = shared_union(declared, own);
+  if (!shared) return nullptr;  // an empty union: the copy adds nothing either
+  return std::make_unique<InstanceShape>(std::move(shared), to_parent.then(placement));
+}
+
+std::shared_ptr<const Shape> ShapeBuilder::shared_union(const scene::ObjectPtr& declared,
+                                                        const Inherited& own) {
+  const InheritedState state = state_of(own);
+  if (const SharedUnion* built = shared_->find(declared, state)) return built->shape;
+  SharedUnions* const shared = std::exchange(shared_, nullptr);  // no instances inside
+  std::vector<ShapePtr> members;
+  split(*declared, own, scene::Transform{}, members);
+  shared_ = shared;
+  if (members.empty()) return nullptr;
+  const size_t count = members.size();
+  std::shared_ptr<const Shape> shape =
+      count == 1 ? std::shared_ptr<const Shape>(std::move(members.front()))
+                 : std::make_shared<const CsgShape>(scene::CsgOperation::union_,
+                                                    std::move(members));
+  return shared_->add(declared, state, SharedUnion{std::move(shape), count});
 }
 
 // A sphere under a similarity (translations, rotations, uniform scales) is a sphere: placed
@@ -311,6 +391,8 @@ std::optional<scene::Sphere> sphere_in_place(const scene::Object& object,
 
 ShapePtr ShapeBuilder::build(const scene::Object& object, const Inherited& parent,
                              const scene::Transform& placement) {
+  // As one object (a CSG's member, a clipping object, a lone object's shape): the copy.
+  if (object.instance) return build(scene::flattened(object), parent, placement);
   const Inherited own = inherit(object, parent);
   const scene::Transform transform =
       placement.is_identity() ? object.transform : object.transform.then(placement);
@@ -357,8 +439,9 @@ ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache,
 }
 
 void build_split_shapes(const scene::Object& object, std::vector<ShapePtr>& out,
-                        implicit::SupportCache* cache, implicit::Tracer tracer) {
-  ShapeBuilder builder(cache, tracer);
+                        implicit::SupportCache* cache, implicit::Tracer tracer,
+                        SharedUnions* shared) {
+  ShapeBuilder builder(cache, tracer, shared);
   builder.split(object, Inherited{}, scene::Transform{}, out);
 }
 

@@ -31,6 +31,10 @@ struct Crossing {
   double t = 0.0;                   // along the ray (unit direction: a distance)
   Vec3 normal{0.0, 0.0, 1.0};       // unit, world space, pointing out of the solid
   const SurfaceInfo* surface = nullptr;
+  // Set by an instance (geometry/instance.hpp): the surface's textures are in the space this
+  // transform places in the world, and are evaluated at the hit point carried back there.
+  // Null: the textures are where the surface is.
+  const scene::Transform* texture_space = nullptr;
 };
 
 class Shape {

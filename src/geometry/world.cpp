@@ -5,6 +5,7 @@
 
 #include "core/box.hpp"
 #include "core/bvh.hpp"
+#include "geometry/instance.hpp"
 
 namespace convray::geometry {
 namespace {
@@ -54,10 +55,11 @@ World::World(const scene::Scene& scene, implicit::SupportCache* cache, implicit:
   auto index = std::make_unique<Index>();
   std::vector<Box3> boxes;
   std::vector<ShapePtr> built;
+  SharedUnions shared;  // kept alive by the instances that use them
   for (const scene::ObjectPtr& object : scene.objects) {
     if (!object) continue;
     const size_t before = built.size();
-    build_split_shapes(*object, built, cache, tracer);
+    build_split_shapes(*object, built, cache, tracer, &shared);
     hollow_.resize(built.size(), object->hollow ? 1 : 0);
     if (!object->hollow) solids_ += built.size() - before;
   }
@@ -78,6 +80,8 @@ World::World(const scene::Scene& scene, implicit::SupportCache* cache, implicit:
       index->unbounded.push_back(id);
     }
   }
+  shared_unions_ = shared.unions();
+  shared_members_ = shared.members();
   index->bvh = Bvh(boxes, 2);
   index_ = std::move(index);
 }

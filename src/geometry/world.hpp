@@ -16,6 +16,8 @@ class SupportCache;
 
 namespace convray::geometry {
 
+class SharedUnions;
+
 // Builds the traceable form of one object record (and its children). Throws InputError at
 // the object's source location for what cannot be built (a degenerate shape, say).
 // Conventions: CSG children, clipped_by and bounded_by objects are in the object's own space
@@ -30,10 +32,13 @@ ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache 
 // The shapes of one object for the scene's hierarchy: build_shape's, except that a union
 // POV-Ray would split (split_union, its default) gives its members, each placed, textured and
 // flagged as inside the union (recursively), so that rays find them as fast as objects that
-// stand alone. Appends to `out`.
+// stand alone. A placement of a declared union (scene/instance.hpp) gives one InstanceShape
+// over the union's members, built once in `shared` (geometry/instance.hpp); without `shared`
+// it is split as its copy. Appends to `out`.
 void build_split_shapes(const scene::Object& object, std::vector<ShapePtr>& out,
                         implicit::SupportCache* cache = nullptr,
-                        implicit::Tracer tracer = implicit::Tracer::fast);
+                        implicit::Tracer tracer = implicit::Tracer::fast,
+                        SharedUnions* shared = nullptr);
 
 class World {
  public:
@@ -84,6 +89,10 @@ class World {
   size_t object_count() const { return shapes_.size(); }
   // The i-th shape built (i < object_count()), in the scene's order.
   const Shape& shape(size_t i) const { return *shapes_[i]; }
+  // The declared unions whose placements share one hierarchy (geometry/instance.hpp), and
+  // their members, each union's counted once however often it is placed.
+  size_t shared_union_count() const { return shared_unions_; }
+  size_t shared_member_count() const { return shared_members_; }
 
  private:
   struct Index;  // a BVH over the bounded objects' boxes, and the list of unbounded ones
@@ -93,6 +102,7 @@ class World {
   size_t blockers_ = 0;                // how many do
   std::vector<uint8_t> hollow_;        // built from a hollow object
   size_t solids_ = 0;                  // how many are not
+  size_t shared_unions_ = 0, shared_members_ = 0;
   std::vector<Box3> bounds_;
   std::unique_ptr<const Index> index_;
 };

@@ -17,6 +17,7 @@
 #include "render/shadows.hpp"
 #include "render/variable_reflection.hpp"
 #include "render/texture_map.hpp"
+#include "render/texture_space.hpp"
 
 namespace convray::render {
 
@@ -69,6 +70,11 @@ uint64_t area_jitter_seed(uint64_t seed, size_t light, const Vec3& point) {
 
 struct Integrator::HitPoint {
   Vec3 point;
+  // Where the textures are evaluated: `point`, or for a placement of a shared union (whose
+  // members' textures are in the union's space, geometry/instance.hpp) `point` carried back
+  // through the placement, `texture_space`.
+  Vec3 texture_point;
+  const scene::Transform* texture_space = nullptr;
   Vec3 view;             // the incoming ray's direction
   Vec3 normal;           // shading normal, unit, facing the viewer
   Vec3 raw_normal;       // the surface's own normal (before bumps), unit, facing the viewer
@@ -132,6 +138,8 @@ Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState&
   hit.point = ray.at(crossing.t);
   hit.view = ray.direction;
   hit.surface = crossing.surface;
+  hit.texture_space = crossing.texture_space;
+  hit.texture_point = texture_point(crossing, hit.point);
   hit.entering = glm::dot(ray.direction, crossing.normal) < 0.0;
   // Seen from within the solid, a surface wears its interior_texture when it has one.
   const SurfaceInfo* surface = crossing.surface;
@@ -147,7 +155,8 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, const Vec3& outwar
                                const HitPoint& hit, const RayState& state,
                                RenderStats& stats) const {
   Vec3 color(0.0);
-  for_each_texture(texture, hit.point, 1.0, [&](const scene::Texture& plain, double weight) {
+  const Vec3& at = hit.texture_point;
+  for_each_texture(texture, at, 1.0, [&](const scene::Texture& plain, double weight) {
     HitPoint own = hit;
     color += weight * shade_layer(plain, outward, own, state, stats);
   });
@@ -157,12 +166,12 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, const Vec3& outwar
 Vec3 Integrator::shade_layer(const scene::Texture& texture, const Vec3& outward, HitPoint& hit,
                              const RayState& state, RenderStats& stats) const {
   hit.finish = &texture.finish;
-  hit.pigment = evaluate_pigment(texture.pigment, hit.point);
+  hit.pigment = evaluate_pigment(texture.pigment, hit.texture_point);
   // The normal turns to face the viewer (the inside of a solid seen from within is lit like an
   // outside), then bumps tilt it: POV-Ray 3.7 bumps the side that is seen, so the inside of a
   // bumped surface is not the outside's bumps turned over (measured: interior_texture.pov).
   hit.raw_normal = hit.entering ? outward : -outward;
-  hit.normal = perturb_normal(texture.normal, hit.point, hit.raw_normal);
+  hit.normal = perturb_normal(texture.normal, hit.texture_space, hit.point, hit.raw_normal);
 
   const scene::Color pigment = hit.pigment;
   const LayerBlend blend =

@@ -6,6 +6,7 @@
 #include "render/interior_fade.hpp"
 #include "render/pigment.hpp"
 #include "render/texture_map.hpp"
+#include "render/texture_space.hpp"
 
 namespace convray::render {
 
@@ -105,7 +106,8 @@ Vec3 shadow_transmittance(const geometry::World& world, const Ray& ray, double t
     if (surface && surface->no_shadow) continue;
     if (!surface) return Vec3(0.0);
     const bool entering = glm::dot(ray.direction, crossing->normal) < 0.0;
-    passed *= surface_transmittance(*surface, ray.at(crossing->t), entering) *
+    passed *= surface_transmittance(*surface, texture_point(*crossing, ray.at(crossing->t)),
+                                    entering) *
               fade.cross(*surface, entering, crossing->t);
     if (std::max({passed.r, passed.g, passed.b}) <= 0.0) return Vec3(0.0);
   }

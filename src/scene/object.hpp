@@ -218,6 +218,12 @@ struct Object {
   // union only: POV-Ray's split_union (on by default) puts the members into the scene's
   // hierarchy; off keeps the union one object (with a hierarchy of its own inside).
   bool split_union = true;
+  // A placement of a declared union shared as it is (`object { U translate ... }`,
+  // scene/instance.hpp): a union whose only child is the declared record, `transform` the
+  // placement's transforms and nothing else set (but the default texture of a top-level
+  // object, in the space it is placed in). Unlike every other record, the textures inside
+  // are in this object's own space, not moved by `transform`.
+  bool instance = false;
   // clipped_by and bounded_by objects are in the object's own space, like a CSG's children:
   // `transform` places them with the object.
   std::vector<ObjectPtr> clipped_by;  // keep only the parts inside all of these

@@ -178,6 +178,8 @@ struct Finish {
   // POV-Ray 3.7's `emission`: light the surface gives off itself, like ambient but not
   // multiplied by the global ambient_light.
   Vec3 emission{0.0};
+
+  bool operator==(const Finish&) const = default;
 };
 
 struct Normal {

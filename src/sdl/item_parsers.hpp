@@ -4,6 +4,7 @@
 #include <optional>
 #include <string_view>
 
+#include "scene/moved_textures.hpp"
 #include "scene/object.hpp"
 #include "scene/scene.hpp"
 #include "scene/texture.hpp"
@@ -103,13 +104,11 @@ struct ParsedMaterial {
 };
 ParsedMaterial parse_material(Parser& parser);
 
-// Where a texture is evaluated moves with the transforms applied after it: appended to the
-// pattern transforms of its pigment and normal.
-void move_texture(scene::Texture& texture, const scene::Transform& transform);
-// A pigment moved by `transform`, with the pigments of its pigment_map.
-void move_pigment(scene::Pigment& pigment, const scene::Transform& transform);
-scene::TexturePtr moved_texture(const scene::TexturePtr& texture,
-                                const scene::Transform& transform);
+// Where a texture is evaluated moves with the transforms applied after it
+// (scene/moved_textures.hpp).
+using scene::move_pigment;
+using scene::move_texture;
+using scene::moved_texture;
 // A warp listed in a pigment (or a texture's pattern) acts on the pigments (textures) its map
 // picks too, as the povray binary draws them (textures/pigments/warp2.pov): appended to their
 // spaces as to the pattern's own. `warp.inner` is ignored: what was listed before the warp
@@ -122,9 +121,7 @@ void place_in_space(scene::Pigment& pigment, const scene::PatternSpace& space);
 void place_in_space(scene::Texture& texture, const scene::PatternSpace& space);
 // `warp` appended to `space`: what was listed before it becomes its inner transform.
 void append_warp(scene::PatternSpace& space, scene::Warp warp);
-// Moves every texture inside `object` (CSG children, mesh faces, blob and convolution
-// components; not the object's own texture), copying the shared records it changes.
-void move_inner_textures(scene::Object& object, const scene::Transform& transform);
+using scene::move_inner_textures;
 
 // --- Scene settings (parse_camera.cpp, parse_light.cpp, parse_atmosphere.cpp).
 scene::Camera parse_camera(Parser& parser);

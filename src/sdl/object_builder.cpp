@@ -1,5 +1,6 @@
 #include "sdl/object_builder.hpp"
 
+#include "scene/instance.hpp"
 #include "sdl/item_parsers.hpp"
 
 namespace convray::sdl::items {
@@ -38,6 +39,7 @@ bool ObjectBuilder::parse_modifier() {
     first_modifier_ = loc;
     first_modifier_word_ = word;
   }
+  if (object_.instance && !at_any_word(parser_, kTransformWords)) flatten_instance();
   if (auto transform = parse_transform_modifier(parser_)) {
     apply_transform(*transform);
   } else if (word == "texture") {
@@ -66,6 +68,16 @@ bool ObjectBuilder::parse_modifier() {
     return parse_flag(word, loc);
   }
   return true;
+}
+
+// A placement that gives more than transforms is the copy of the declared union: what it
+// gives lies over the members' own textures and flags (scene/instance.hpp). The transforms
+// read so far are in the copy's textures now.
+void ObjectBuilder::flatten_instance() {
+  object_ = scene::flattened(object_);
+  texture_.reset();
+  if (object_.texture) texture_ = *object_.texture;
+  block_transform_ = scene::Transform{};
 }
 
 void ObjectBuilder::apply_transform(const scene::Transform& transform) {

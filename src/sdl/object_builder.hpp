@@ -41,6 +41,7 @@ class ObjectBuilder {
   scene::ObjectPtr build(const scene::ObjectPtr& unchanged = nullptr);
 
  private:
+  void flatten_instance();
   void apply_transform(const scene::Transform& transform);
   scene::Texture& texture_to_modify();
   void parse_texture_modifier();

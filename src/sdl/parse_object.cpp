@@ -1,6 +1,7 @@
 // Which parser an object keyword goes to, and `object { ID | OBJECT  [modifiers] }`.
 #include <iterator>
 
+#include "scene/instance.hpp"
 #include "sdl/item_parsers.hpp"
 #include "sdl/object_builder.hpp"
 
@@ -93,13 +94,16 @@ scene::ObjectPtr parse_object_body(Parser& parser, Block& block, scene::ObjectPt
     }
     base = parse_object(parser);
   }
-  // Without modifiers the declared record is shared as it is (a mesh is not copied).
+  // Without modifiers the declared record is shared as it is (a mesh is not copied); a
+  // declared union moved by transforms is shared too, as an instance (scene/instance.hpp).
   if (!block.more()) return base;
   if (const auto* mesh = std::get_if<scene::TriangleMesh>(&base->shape)) {
     // The copy holds the mesh's lists again (TriangleMesh::counted): checked before it is made.
     parser.check_element_budget(mesh->counted.count(), block.loc());
   }
-  scene::Object copy = *base;
+  scene::Object copy = scene::can_instance(*base)
+                           ? scene::instance_of(base, scene::Transform{}, block.loc())
+                           : *base;
   copy.loc = block.loc();
   ObjectBuilder builder(parser, std::move(copy));
   do {

@@ -79,8 +79,8 @@ TEST(ItemsBlob, ComponentTexturesAreIndexedInListingOrder) {
   const auto object = only_object(parse(R"(
     blob {
       sphere { 0, 1, 1 }
-      cylinder { 0, y, 1, 1 pigment { rgb <1, 0, 0> } translate x }
-      sphere { x, 1, 1 texture { pigment { rgb <0, 0, 1> } } }
+      cylinder { 0, y, 1, 1 pigment { rgb <1, 0, 0> } normal { bumps 0.5 } translate x }
+      sphere { x, 1, 1 texture { pigment { rgb <0, 0, 1> } normal { bumps 0.5 } } }
       pigment { rgb 1 }
       translate <0, 0, 5>
     })"));
@@ -91,7 +91,8 @@ TEST(ItemsBlob, ComponentTexturesAreIndexedInListingOrder) {
   EXPECT_EQ(blob.component_order[1].first, Kind::blob_cylinder);
   const scene::Texture& red = *blob.component_textures[0].texture;
   expect_near(red.pigment.color.rgb, Vec3(1, 0, 0));
-  // Moved by the component's translate and then by the blob's.
+  // Moved by the component's translate and then by the blob's (textures with a pattern: one
+  // that looks the same everywhere is shared unmoved, scene/moved_textures.hpp).
   expect_near(red.pigment.space.transform.point(Vec3(0.0)), Vec3(1, 0, 5));
   expect_near(blob.component_textures[1].texture->pigment.space.transform.point(Vec3(0.0)),
               Vec3(0, 0, 5));

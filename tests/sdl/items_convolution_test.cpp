@@ -90,7 +90,7 @@ TEST(ItemsConvolution, ComponentTexturesAndObjectModifiers) {
   const auto object = only_object(parse(R"(
     convolution {
       segment { 0, x }
-      point { y pigment { rgb <1, 0, 0> } }
+      point { y pigment { rgb <1, 0, 0> } normal { bumps 0.5 } }
       texture { pigment { rgb 1 } }
       scale 2
     })"));
@@ -98,6 +98,8 @@ TEST(ItemsConvolution, ComponentTexturesAndObjectModifiers) {
   ASSERT_EQ(c.component_textures.size(), 1u);
   EXPECT_EQ(c.component_textures[0].index, 1u);
   expect_near(c.component_textures[0].texture->pigment.color.rgb, Vec3(1, 0, 0));
+  // A texture with a pattern moves with the object (one that looks the same everywhere is
+  // shared unmoved: scene/moved_textures.hpp).
   expect_near(c.component_textures[0].texture->pigment.space.transform.point(Vec3(1.0)), Vec3(2.0));
   expect_near(object->transform.point(Vec3(1.0)), Vec3(2.0));
 }
