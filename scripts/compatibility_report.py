@@ -39,8 +39,21 @@ def command_output(*command):
         return ""
 
 
+def rounding_notes():
+    """scripts/compatibility_notes.tsv: scenes whose difference is rounding, and why."""
+    notes = {}
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "compatibility_notes.tsv")
+    with open(path) as f:
+        for line in f:
+            if line.strip() and not line.startswith("#"):
+                scene, why = line.rstrip("\n").split("\t", 1)
+                notes[scene] = why
+    return notes
+
+
 def main():
     results, examples, minutes, jobs, limit, *scenes = sys.argv[1:]
+    notes = rounding_notes()
     rows = []
     for scene in scenes:
         path = os.path.join(results, scene_id(scene, examples) + ".tsv")
@@ -100,12 +113,22 @@ def main():
     for reason, n in reasons.most_common(40):
         p(f"| {n} | {cell(reason)} |")
     p("")
+    rounding = [(r[0], r[2]) for r in rows if r[1] == "differs" and r[0] in notes]
+    if rounding:
+        p("## Differences from rounding\n")
+        p("These scenes differ from POV-Ray's picture without any feature left out or "
+          "approximated (`scripts/compatibility_notes.tsv`):\n")
+        for name, psnr in rounding:
+            p(f"- `{name}` ({psnr} dB): {notes[name]}.")
+        p("")
     p("## Every scene\n")
     p("Last column: for a refused scene the error convray stopped on; for one it rendered, "
       "its first warning (what it ignored or approximated), empty when it warned of nothing.\n")
     p("| scene | status | PSNR (dB) | POV-Ray (s) | convray (s) | first error or warning |")
     p("| --- | --- | ---: | ---: | ---: | --- |")
     for name, status, psnr, pov_s, our_s, detail in rows:
+        if status == "differs" and not detail and name in notes:
+            detail = "rounding (see Differences from rounding)"
         p(f"| {cell(name)} | {status} | {psnr} | {pov_s} | {our_s} | {cell(detail)} |")
 
 
