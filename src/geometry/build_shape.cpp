@@ -355,7 +355,8 @@ ShapePtr ShapeBuilder::instance_shape(const scene::Object& instance, const Inher
   }
   std::shared_ptr<const Shape> shared = shared_union(declared, own);
   if (!shared) return nullptr;  // an empty union: the copy adds nothing either
-  return std::make_unique<InstanceShape>(std::move(shared), to_parent.then(placement));
+  return std::make_unique<TransformedShape>(std::move(shared), to_parent.then(placement),
+                                            /*places_shared=*/true);
 }
 
 std::shared_ptr<const Shape> ShapeBuilder::shared_union(const scene::ObjectPtr& declared,

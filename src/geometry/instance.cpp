@@ -5,56 +5,6 @@
 
 namespace convray::geometry {
 
-// Like TransformedShape, but the shape is shared by every placement, and crossings name the
-// placement, since the shared members' textures are in the union's own space.
-InstanceShape::InstanceShape(std::shared_ptr<const Shape> shared,
-                             const scene::Transform& placement)
-    : shared_(std::move(shared)),
-      placement_(placement),
-      bounds_(transform_box(placement.forward(), shared_->bounds())),
-      inside_bounds_(transform_box(placement.forward(), shared_->inside_bounds())) {}
-
-Ray InstanceShape::shared_ray(const Ray& ray, double& stretch) const {
-  const Vec3 direction = placement_.inverse_vector(ray.direction);
-  stretch = glm::length(direction);
-  return Ray{placement_.inverse_point(ray.origin), direction / stretch};
-}
-
-void InstanceShape::to_placed_space(Crossing& crossing, double stretch) const {
-  crossing.t /= stretch;
-  crossing.normal = glm::normalize(placement_.normal(crossing.normal));
-  crossing.texture_space = &placement_;
-}
-
-void InstanceShape::crossings(const Ray& ray, double tmin, double tmax,
-                              std::vector<Crossing>& out, TraceStats& stats) const {
-  double stretch = 1.0;
-  const Ray local = shared_ray(ray, stretch);
-  const size_t first = out.size();
-  shared_->crossings(local, tmin * stretch, tmax * stretch, out, stats);
-  for (size_t i = first; i < out.size(); ++i) to_placed_space(out[i], stretch);
-}
-
-std::optional<Crossing> InstanceShape::first_crossing(const Ray& ray, double tmin, double tmax,
-                                                      TraceStats& stats) const {
-  double stretch = 1.0;
-  const Ray local = shared_ray(ray, stretch);
-  auto crossing = shared_->first_crossing(local, tmin * stretch, tmax * stretch, stats);
-  if (crossing) to_placed_space(*crossing, stretch);
-  return crossing;
-}
-
-bool InstanceShape::any_crossing(const Ray& ray, double tmin, double tmax,
-                                 TraceStats& stats) const {
-  double stretch = 1.0;
-  const Ray local = shared_ray(ray, stretch);
-  return shared_->any_crossing(local, tmin * stretch, tmax * stretch, stats);
-}
-
-bool InstanceShape::inside(const Vec3& p) const {
-  return shared_->inside(placement_.inverse_point(p));
-}
-
 namespace {
 
 bool same_texture(const scene::TexturePtr& a, const scene::TexturePtr& b) {

@@ -1,8 +1,9 @@
 #pragma once
 // A declared union placed many times (scene/instance.hpp) is traced through one hierarchy of
 // its members, built once in the union's own space and shared by every placement: each
-// placement is an InstanceShape in the scene's hierarchy that carries rays into that space and
-// crossings back out. 1000 placements of a 1000-member union hold 1000 members, not 10^6.
+// placement is a TransformedShape (geometry/transformed.hpp) in the scene's hierarchy that
+// carries rays into that space and crossings back out. 1000 placements of a 1000-member union
+// hold 1000 members, not 10^6.
 //
 // The members' textures stay in the union's own space: a crossing names the placement
 // (Crossing::texture_space) and the renderer evaluates textures at the hit point carried back
@@ -24,30 +25,6 @@ struct SharedUnion {
   size_t members = 0;
 };
 
-class InstanceShape final : public Shape {
- public:
-  // `placement` maps the shared union's space to this shape's; it must be invertible.
-  InstanceShape(std::shared_ptr<const Shape> shared, const scene::Transform& placement);
-
-  Box3 bounds() const override { return bounds_; }
-  Box3 inside_bounds() const override { return inside_bounds_; }
-  void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
-                 TraceStats& stats) const override;
-  std::optional<Crossing> first_crossing(const Ray& ray, double tmin, double tmax,
-                                         TraceStats& stats) const override;
-  bool inside(const Vec3& p) const override;
-  bool blocks_light() const override { return shared_->blocks_light(); }
-  bool any_crossing(const Ray& ray, double tmin, double tmax, TraceStats& stats) const override;
-
- private:
-  // The ray in the shared space with a unit direction; t there = t here * stretch.
-  Ray shared_ray(const Ray& ray, double& stretch) const;
-  void to_placed_space(Crossing& crossing, double stretch) const;
-
-  std::shared_ptr<const Shape> shared_;
-  scene::Transform placement_;
-  Box3 bounds_, inside_bounds_;
-};
 
 // What the members of a shared union inherit from above it (nothing that depends on where it
 // is placed: textures that look the same everywhere, an interior, flags): placements that

@@ -4,9 +4,11 @@
 
 namespace convray::geometry {
 
-TransformedShape::TransformedShape(ShapePtr child, const scene::Transform& transform)
+TransformedShape::TransformedShape(std::shared_ptr<const Shape> child,
+                                   const scene::Transform& transform, bool places_shared)
     : child_(std::move(child)),
       transform_(transform),
+      places_shared_(places_shared),
       bounds_(transform_box(transform.forward(), child_->bounds())),
       inside_bounds_(transform_box(transform.forward(), child_->inside_bounds())) {}
 
@@ -22,6 +24,7 @@ Ray TransformedShape::child_ray(const Ray& ray, double& stretch) const {
 void TransformedShape::to_placed_space(Crossing& crossing, double stretch) const {
   crossing.t /= stretch;
   crossing.normal = glm::normalize(transform_.normal(crossing.normal));
+  if (places_shared_) crossing.texture_space = &transform_;
 }
 
 void TransformedShape::crossings(const Ray& ray, double tmin, double tmax,

@@ -1,6 +1,12 @@
 #pragma once
 // An object placed by its transform: rays go into the object's own space (direction
 // renormalised, distances scaled back), normals come out by the inverse transpose.
+//
+// Also a placement of a declared union whose members are shared by every placement
+// (geometry/instance.hpp): the child is then shared, and crossings name the placement
+// (Crossing::texture_space), since the shared members' textures are in the union's own space.
+#include <memory>
+
 #include "geometry/shape.hpp"
 #include "scene/transform.hpp"
 
@@ -9,7 +15,9 @@ namespace convray::geometry {
 class TransformedShape final : public Shape {
  public:
   // `transform` maps the child's space to this shape's; it must be invertible.
-  TransformedShape(ShapePtr child, const scene::Transform& transform);
+  // `places_shared`: the child is a shared union's members (see above).
+  TransformedShape(std::shared_ptr<const Shape> child, const scene::Transform& transform,
+                   bool places_shared = false);
 
   Box3 bounds() const override;
   void crossings(const Ray& ray, double tmin, double tmax, std::vector<Crossing>& out,
@@ -27,8 +35,9 @@ class TransformedShape final : public Shape {
   Ray child_ray(const Ray& ray, double& stretch) const;
   void to_placed_space(Crossing& crossing, double stretch) const;
 
-  ShapePtr child_;
+  std::shared_ptr<const Shape> child_;
   scene::Transform transform_;
+  bool places_shared_;
   Box3 bounds_, inside_bounds_;
 };
 

@@ -32,7 +32,7 @@ ShapePtr build_shape(const scene::Object& object, implicit::SupportCache* cache 
 // The shapes of one object for the scene's hierarchy: build_shape's, except that a union
 // POV-Ray would split (split_union, its default) gives its members, each placed, textured and
 // flagged as inside the union (recursively), so that rays find them as fast as objects that
-// stand alone. A placement of a declared union (scene/instance.hpp) gives one InstanceShape
+// stand alone. A placement of a declared union (scene/instance.hpp) gives one TransformedShape
 // over the union's members, built once in `shared` (geometry/instance.hpp); without `shared`
 // it is split as its copy. Appends to `out`.
 void build_split_shapes(const scene::Object& object, std::vector<ShapePtr>& out,
