@@ -18,6 +18,12 @@ namespace {
 // Chunked first-root searches pay off from about this many supports per line (measured on
 // the vertex blob of bench/vertex_blob_render: a loss at 2.5, a gain from 10).
 constexpr double kChunkedSupportsPerLine = 5.0;
+// A chunk is at least this many mean support widths long: a support crossing a chunk's end is
+// gathered (and its exact span computed) again in the next chunk, which costs more than the
+// chunks save where they are short beside the supports (the soup of scenes/soup.pov).
+// (The soup's render: 0.79 of the instructions with chunks of at least 2 widths, 0.80 with
+// 4 or more, which leave it one chunk; the dragon's chunks are longer anyway.)
+constexpr double kChunkWidths = 2.0;
 
 void check_weight(const scene::Weight& w, const char* what) {
   if (!(w.radius > 0.0) || !std::isfinite(w.radius) || !std::isfinite(w.strength)) {
@@ -158,6 +164,7 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
   if (cache) take_prebuilt(sources, group_meshes, *cache);
   index = std::make_unique<accel::SupportIndex>(sources);
   gather_in_chunks = expected_supports_per_line() > kChunkedSupportsPerLine;
+  min_chunk = kChunkWidths * mean_support_width();
 }
 
 // Cauchy's formula: a convex body's mean shadow is a quarter of its surface area, so a random
@@ -187,6 +194,29 @@ double ConvolutionSurface::Impl::expected_supports_per_line() const {
     }
   }
   return area > 0.0 ? supports / area : 0.0;
+}
+
+// Twice the mean of the supports' half-widths: each primitive's radius plus how far its
+// skeleton reaches from its middle (a point's nothing, a segment's half length, a triangle's
+// farthest corner from its centroid, an arc's circle radius).
+double ConvolutionSurface::Impl::mean_support_width() const {
+  double sum = 0.0;
+  for (double r : sphere_radii) sum += r;
+  for (size_t i = 0; i < capsules.size(); ++i) {
+    sum += capsule_radii[i] + 0.5 * glm::length(capsules[i].b - capsules[i].a);
+  }
+  for (size_t i = 0; i < arcs.size(); ++i) sum += arc_radii[i] + arcs[i].radius;
+  for (const Group& g : groups) {
+    for (uint32_t i = g.first_triangle; i < g.end_triangle; ++i) {
+      const field::Triangle& t = triangles[i];
+      const Vec3 centroid = (t.a + t.b + t.c) * (1.0 / 3.0);
+      sum += g.radius + std::sqrt(std::max({glm::dot(t.a - centroid, t.a - centroid),
+                                            glm::dot(t.b - centroid, t.b - centroid),
+                                            glm::dot(t.c - centroid, t.c - centroid)}));
+    }
+  }
+  const size_t count = sphere_radii.size() + capsules.size() + arcs.size() + triangles.size();
+  return count > 0 ? 2.0 * sum / double(count) : 0.0;
 }
 
 namespace {

@@ -53,6 +53,8 @@ struct ConvolutionSurface::Impl {
   // bounds crosses enough supports that stopping early beats the extra traversals and the
   // supports that straddle a chunk's end, gathered twice.
   bool gather_in_chunks = false;
+  double min_chunk = 0.0;  // the shortest chunk (kChunkWidths mean support widths)
+  double mean_support_width() const;
   Tracer tracer = Tracer::fast;
   std::unique_ptr<accel::SupportIndex> index;  // built last, over the arrays above
 

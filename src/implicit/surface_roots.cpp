@@ -375,7 +375,7 @@ void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double 
   const double slack = 1e-9 * glm::length(bounds.extent());
   const Box3 grown{bounds.lo - Vec3(slack), bounds.hi + Vec3(slack)};
   if (!clip_to_box(ray, grown, tmin, tmax)) return;
-  double length = kFirstChunk * (tmax - tmin);
+  double length = std::max(kFirstChunk * (tmax - tmin), surface.min_chunk);
   for (double t0 = tmin;; length *= 2.0) {
     const double t1 = tmax - t0 > 1.5 * length ? t0 + length : tmax;
     if (solve_range(surface, request, t0, t1, out, stats) || t1 >= tmax) return;

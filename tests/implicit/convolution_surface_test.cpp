@@ -8,6 +8,7 @@
 
 #include "implicit/convolution_surface.hpp"
 #include "implicit/reference_tracer.hpp"
+#include "implicit/surface_impl.hpp"
 #include "field/threshold.hpp"
 
 namespace convray::implicit {
@@ -231,6 +232,20 @@ TEST(ConvolutionSurface, RejectsBadThresholdsAndWeights) {
   o.threshold = 1.0;
   o.points.push_back({{0, 0, 0}, {1.0, -1.0}});
   EXPECT_THROW(ConvolutionSurface{o}, std::invalid_argument);
+}
+
+// The chunks of a first-root search are at least two mean support widths long: the widths
+// by hand for a point, a segment and an equilateral triangle.
+TEST(ConvolutionSurface, MeanSupportWidthIsTheSupportsHalfWidthsTwice) {
+  scene::ConvolutionObject o;
+  o.points.push_back({{0, 0, 0}, {1.0, 0.5}});                 // half-width 0.5
+  o.segments.push_back({{{0, 0, 0}, {2, 0, 0}}, {1.0, 0.3}});  // 0.3 + 1
+  const double s = std::sqrt(3.0);  // corners 2 from the centroid at the origin
+  o.meshes.push_back({{{{2, 0, 0}, {-1, s, 0}, {-1, -s, 0}}}, {1.0, 0.2}});  // 0.2 + 2
+  o.threshold = 0.5;
+  const ConvolutionSurface surface(o);
+  EXPECT_NEAR(surface.impl().mean_support_width(), 2.0 * (0.5 + 1.3 + 2.2) / 3.0, 1e-12);
+  EXPECT_NEAR(surface.impl().min_chunk, 4.0 * (0.5 + 1.3 + 2.2) / 3.0, 1e-12);
 }
 
 }  // namespace
