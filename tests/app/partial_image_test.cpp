@@ -202,6 +202,15 @@ TEST_F(PartialRender, BoundsOutsideThePictureFailBeforeAnyWork) {
   EXPECT_FALSE(std::filesystem::exists(file("bad.png")));
 }
 
+TEST_F(PartialRender, HelpNamesTheOptions) {
+  const CliRun run = run_convray("render --help");
+  EXPECT_EQ(run.exit_code, 0);
+  for (const char* name : {"--start-row N, --end-row M", "+SRN +ERM", "Start_Column=",
+                           "scripts/stitch-parts.sh"}) {
+    EXPECT_NE(run.out.find(name), std::string::npos) << name << "\n" << run.out;
+  }
+}
+
 // POV-Ray renders the same rectangle: its picture's non-black pixels are where ours are.
 TEST_F(PartialRender, PovRayRendersTheSameRectangle) {
   SKIP_WITHOUT_POVRAY();
