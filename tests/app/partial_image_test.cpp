@@ -202,6 +202,35 @@ TEST_F(PartialRender, BoundsOutsideThePictureFailBeforeAnyWork) {
   EXPECT_FALSE(std::filesystem::exists(file("bad.png")));
 }
 
+// scripts/stitch-parts.sh, as docs/render-farm.md tells users to run it: rows and columns mixed.
+TEST_F(PartialRender, StitchPartsScriptGivesTheWholePicture) {
+  if (std::system("command -v oiiotool > /dev/null") != 0) {
+    GTEST_SKIP() << "oiiotool is not installed (Debian package openimageio-tools)";
+  }
+  const std::string aa = " +W64 +H48 +A0.05 +J";
+  const std::vector<unsigned char> full = render("full", aa);
+  render("top", aa + " +SR1 +ER20");
+  render("left", aa + " +SR21 +ER48 +SC1 +EC30");
+  render("right", aa + " +SR21 +ER48 +SC0.453125 +EC1");  // from column 30: one overlaps
+  const std::string stitch = "bash '" + std::string(CONVRAY_SOURCE_DIR) +
+                             "/scripts/stitch-parts.sh' ";
+  const std::string in_dir = "cd '" + dir_.string() + "' && ";
+  ASSERT_EQ(std::system((in_dir + stitch + "whole.png top.png left.png right.png > log 2>&1")
+                            .c_str()),
+            0)
+      << read_file(file("log"));
+  EXPECT_EQ(read_rgb8(file("whole.png")), full);
+  // Parts of different sizes are refused, and nothing is written.
+  render("small", " +W32 +H48 +SR1 +ER10");
+  EXPECT_NE(std::system((in_dir + stitch + "bad.png top.png small.png > log 2>&1").c_str()), 0);
+  EXPECT_NE(read_file(file("log")).find("parts of one picture must agree"), std::string::npos)
+      << read_file(file("log"));
+  EXPECT_FALSE(std::filesystem::exists(file("bad.png")));
+  for (const auto& entry : std::filesystem::directory_iterator(dir_)) {
+    EXPECT_EQ(entry.path().filename().string().find(".stitch"), std::string::npos);
+  }
+}
+
 TEST_F(PartialRender, HelpNamesTheOptions) {
   const CliRun run = run_convray("render --help");
   EXPECT_EQ(run.exit_code, 0);

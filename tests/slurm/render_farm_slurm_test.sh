@@ -36,20 +36,40 @@ chmod 755 "$tmp"
 mkdir -p "$tmp/state" "$tmp/spool" "$tmp/logs" "$tmp/out"
 export SLURM_CONF="$tmp/slurm.conf"
 daemons=()  # the PIDs of what this test started, stopped in reverse order
+slurm_up=""  # set once the node is idle: from then on there may be jobs to cancel
 
 cleanup() {
   local status=$?
   if [ ${#daemons[@]} -gt 0 ]; then
-    scancel --quiet --user="$(id -un)" 2> /dev/null || true  # only this test's cluster
+    # Cancel this cluster's jobs (SLURM_CONF names it) and let slurmd end their steps first.
+    if [ -n "$slurm_up" ]; then
+      scancel --quiet --user="$(id -un)" 2> /dev/null || true
+      for _ in $(seq 40); do [ -z "$(squeue -h 2> /dev/null)" ] && break; sleep 0.5; done
+    fi
     for (( i = ${#daemons[@]} - 1; i >= 0; --i )); do
       kill "${daemons[$i]}" 2> /dev/null || true
       wait "${daemons[$i]}" 2> /dev/null || true
     done
+    kill_orphaned_steps
   fi
   [ "${KEEP_SLURM_TEST_FOLDER:-}" ] && echo "kept $tmp" || rm -rf -- "$tmp"
   exit $status
 }
+
+# A job step whose slurmd is gone (the test interrupted mid-job) waits for it forever, ignoring
+# SIGTERM: this cluster's steps are the slurmstepd processes whose environment names its
+# slurm.conf, and they are killed by their process ids.
+kill_orphaned_steps() {
+  local environ pid
+  for environ in /proc/[0-9]*/environ; do
+    pid="${environ#/proc/}" pid="${pid%/environ}"
+    [ "$(cat "/proc/$pid/comm" 2> /dev/null)" = slurmstepd ] || continue
+    { tr '\0' '\n' < "$environ"; } 2> /dev/null | grep -qxF "SLURM_CONF=$SLURM_CONF" &&
+      kill -KILL "$pid" 2> /dev/null || true
+  done
+}
 trap cleanup EXIT
+trap 'exit 143' TERM INT HUP  # a signal (CTest's timeout) also stops the daemons
 
 show_logs() {
   local f
@@ -128,7 +148,7 @@ start_slurm() {
   slurmd -D -f "$SLURM_CONF" -N "$node" > "$tmp/slurmd.out" 2>&1 &
   daemons+=($!)
   for _ in $(seq 120); do
-    [ "$(sinfo -h -N -o %t 2> /dev/null | tr -d ' ')" = idle ] && return
+    [ "$(sinfo -h -N -o %t 2> /dev/null | tr -d ' ')" = idle ] && { slurm_up=1; return; }
     sleep 0.5
   done
   skip "Slurm did not start (node state '$(sinfo -h -N -o %t 2>&1 | head -n 1)'):" \
