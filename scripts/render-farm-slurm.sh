@@ -82,7 +82,7 @@ submit_still() {
   local scene="$1" output="$2" parts="$3"; shift 3
   [ "${1:-}" = -- ] && shift
   [[ "$parts" =~ ^[1-9][0-9]*$ ]] || { echo "$0: PARTS must be a whole number >= 1" >&2; exit 2; }
-  [[ "$output" == *.* ]] || { echo "$0: OUTPUT needs an extension (.png, .tif, .exr)" >&2; exit 2; }
+  [[ "${output##*/}" == *.* ]] || { echo "$0: OUTPUT needs an extension (.png, .tif, .exr)" >&2; exit 2; }
   local array
   array=$(sbatch --parsable --array="0-$((parts - 1))" "$@" "$0" still-task "$scene" "$output" "$parts")
   array="${array%%;*}"  # "ID;CLUSTER" on federated clusters
