@@ -147,11 +147,14 @@ start_slurm() {
   daemons+=($!)
   slurmd -D -f "$SLURM_CONF" -N "$node" > "$tmp/slurmd.out" 2>&1 &
   daemons+=($!)
+  local pid state
   for _ in $(seq 120); do
     [ "$(sinfo -h -N -o %t 2> /dev/null | tr -d ' ')" = idle ] && { slurm_up=1; return; }
+    for pid in "${daemons[@]}"; do kill -0 "$pid" 2> /dev/null || break 2; done  # one died
     sleep 0.5
   done
-  skip "Slurm did not start (node state '$(sinfo -h -N -o %t 2>&1 | head -n 1)'):" \
+  state="$(sinfo -h -N -o %t 2>&1 | head -n 1)" || true
+  skip "Slurm did not start (node state '$state'):" \
     "$(tail -n 3 "$tmp/slurmctld.out" "$tmp/slurmctld.log" "$tmp/slurmd.out" "$tmp/slurmd.log" 2> /dev/null)"
 }
 
