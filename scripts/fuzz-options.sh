@@ -26,6 +26,7 @@ while IFS= read -r -d '' f; do
 done < <(find "$root/scenes" -name '*.ini' -size -16k -print0)
 printf 'scene.pov\n+W800\n+H600\n+A0.3\n-D\n+KFI1\n+KFF30\n+KC\n--video\nout.mp4' >"$out/corpus/seed_switches"
 printf '+Iscene.pov\n+Oout.png\n+SF0.25\n+EF0.75\n--frame-step\n3\n--declare\nX=1.5' >"$out/corpus/seed_pov"
+printf 'scene.pov\n+W64\n+H48\n+SR0.25\n+ER30\n+SC2\n--end-column\n1\n@INI\0Start_Row=3\nEnd_Column=0.5\n' >"$out/corpus/seed_partial"
 printf '@INI[Fast]\0[Fast]\nWidth=64\nHeight=48\nFinal_Frame=10\nInput_File_Name=s.pov\n' >"$out/corpus/seed_section"
 
 fuzz_run options_fuzz "$out/corpus" "$out/artifacts" "$out/logs/run.log" "$seconds" -max_len=4096

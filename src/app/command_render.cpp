@@ -80,6 +80,7 @@ render::RenderSettings render_settings(const RenderOptions& o) {
   s.aa_depth = o.aa_depth;
   s.jitter = o.jitter;
   s.jitter_amount = o.jitter_amount;
+  s.window = o.window;
   return s;
 }
 
@@ -135,9 +136,10 @@ class FrameRenderer {
     step_.now("rendering the " + std::to_string(o_.width) + "x" + std::to_string(o_.height) +
                   " image" + label, "give a smaller +W and +H");
     // A bar only where someone watches: on a terminal, never into a pipe or a log file.
-    Progress progress(progress_label(frame, position),
-                              uint64_t(o_.width) * uint64_t(o_.height), err_,
-                              Progress::stderr_is_terminal());
+    const uint64_t pixels =
+        o_.window ? o_.window->pixels() : uint64_t(o_.width) * uint64_t(o_.height);
+    Progress progress(progress_label(frame, position), pixels, err_,
+                      Progress::stderr_is_terminal());
     const render::RenderResult result =
         render::render_scene(parsed.scene, world, render_settings(o_), &progress);
     times.render = seconds_since(start);
@@ -163,13 +165,21 @@ class FrameRenderer {
     if (o_.quiet) return;
     if (!plan_.animated) {
       out_ << "convray: " << o_.scene << ": wrote " << file << " (" << o_.width << "x" << o_.height
-           << ", " << objects << " objects, " << times.total() << " s)\n";
+           << window_text() << ", " << objects << " objects, " << times.total() << " s)\n";
       return;
     }
     out_ << "convray: " << progress_label(frame, position) << ", clock " << frame.clock
          << ": wrote " << file << " (" << objects << " objects, " << std::fixed
          << std::setprecision(3) << times.total() << " s)\n"
          << std::defaultfloat << std::setprecision(6);
+  }
+
+  // ", columns 1-64, rows 10-20" for a partial render (numbered from 1, as POV-Ray says them).
+  std::string window_text() const {
+    if (!o_.window) return "";
+    const render::PixelWindow& w = *o_.window;
+    return ", columns " + std::to_string(w.x0 + 1) + "-" + std::to_string(w.x1) + ", rows " +
+           std::to_string(w.y0 + 1) + "-" + std::to_string(w.y1);
   }
 
   const RenderOptions& o_;
@@ -202,6 +212,15 @@ void check_before_rendering(const RenderOptions& o, const FramePlan& plan) {
 
 // A library folder that is not there finds nothing: said once, then the render goes on (as
 // POV-Ray goes on), so that a mistyped -L does not pass without a word.
+// A start after its end renders nothing: POV-Ray writes the black picture without a word; a
+// word is said here, since it is seldom what was meant.
+void warn_about_an_empty_window(const RenderOptions& o, std::ostream& err) {
+  if (o.window && o.window->empty()) {
+    err << "convray: warning: the partial image's start is after its end (+SC/+EC, +SR/+ER): "
+           "nothing is rendered and the picture is black, as POV-Ray does\n";
+  }
+}
+
 void warn_about_missing_library_folders(const RenderOptions& o, std::ostream& err) {
   for (const std::string& folder : o.library_paths) {
     std::error_code error;
@@ -230,6 +249,7 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err,
   if (o.list_frames) return list_frames(o, plan, out);
   check_before_rendering(o, plan);
   warn_about_missing_library_folders(o, err);
+  warn_about_an_empty_window(o, err);
   std::unique_ptr<tbb::global_control> threads;
   if (o.threads > 0) {
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,

@@ -28,6 +28,11 @@ const char* const kRenderUsage =
     "  --aa-depth N        N x N samples in a supersampled pixel (+RN; default 3)\n"
     "  --jitter [J]        jitter the supersamples by J pixels, reproducibly (+J[J]; -J off)\n"
     "  --threads N         render threads (+WTN; default: every core)\n"
+  "Partial image (POV-Ray's; the whole picture is written, black outside the part, so that\n"
+  "parts rendered apart add up: scripts/stitch-parts.sh, docs/render-farm.md):\n"
+  "  --start-row N, --end-row M          rows N to M only (+SRN +ERM; Start_Row=, End_Row=)\n"
+  "  --start-column N, --end-column M    columns N to M (+SCN +ECM; Start_Column=, ...)\n"
+  "                      values above 1 count pixels from 1; 0.0 to 1.0 are fractions\n"
     "Scene:\n"
     "  -L, --library DIR   also search DIR for #include files and meshes (+LDIR)\n"
     "  --declare ID=VALUE  declare a float identifier (Declare=ID=VALUE)\n"
@@ -99,6 +104,32 @@ void set_output(RenderOptions& o, const std::string& text, const std::string& wh
 void set_scene(RenderOptions& o, const std::string& text, const std::string& what) {
   if (text.empty()) throw UsageError(what + ": expected the scene file");
   o.scene = text;
+}
+
+// The partial image's bounds, by their three names: a long option ("--start-row"), an INI key
+// ("start_row", lower case) and a switch ("sr", after + or -).
+enum class BoundName { long_option, ini_key, switch_key };
+
+// Sets the bound `name` (of the kind `kind`) to the number `value()` gives; false if `name` is
+// no bound. `what` names the argument in messages.
+template <typename Value>
+bool set_partial_bound(RenderOptions& o, BoundName kind, const std::string& name,
+                       const std::string& what, Value&& value) {
+  struct Names {
+    const char* names[3];
+    std::optional<PartialBound> PartialImage::*bound;
+  };
+  static const Names kBounds[] = {
+      {{"--start-column", "start_column", "sc"}, &PartialImage::start_column},
+      {{"--end-column", "end_column", "ec"}, &PartialImage::end_column},
+      {{"--start-row", "start_row", "sr"}, &PartialImage::start_row},
+      {{"--end-row", "end_row", "er"}, &PartialImage::end_row}};
+  for (const Names& b : kBounds) {
+    if (name != b.names[int(kind)]) continue;
+    o.partial.*b.bound = PartialBound{number(value(), what), what};
+    return true;
+  }
+  return false;
 }
 
 // Frame numbers: POV-Ray's are non-negative; a negative one is clamped by plan_frames.
@@ -226,6 +257,8 @@ bool apply_long_option(RenderOptions& o, const std::vector<std::string>& args, s
     o.read_anywhere = true;
   } else if (name == "--declare") {
     set_declare(o, option_value(args, i, name), name);
+  } else if (set_partial_bound(o, BoundName::long_option, name, name,
+                               [&] { return option_value(args, i, name); })) {
   } else if (name == "--stats") {
     o.stats = true;
   } else if (name == "--quiet") {
@@ -240,7 +273,7 @@ bool apply_long_option(RenderOptions& o, const std::vector<std::string>& args, s
 
 // INI keys that change nothing here: display, console streams, file types and bit depths,
 // bounding controls. Keys that would change the picture in ways convray does not support
-// (partial images, shell hooks, alpha) are not here, so they are errors, like unknown keys.
+// (shell hooks, alpha) are not here, so they are errors, like unknown keys.
 constexpr std::string_view kIgnoredIniKeys[] = {"display",          "verbose",
                                                 "pause_when_done",  "test_abort",
                                                 "test_abort_count", "draw_vistas",
@@ -286,6 +319,10 @@ constexpr std::string_view kIniKeys[] = {"Input_File_Name",
                                          "Subset_End_Frame",
                                          "Frame_Step",
                                          "Continue_Trace",
+                                         "Start_Column",
+                                         "End_Column",
+                                         "Start_Row",
+                                         "End_Row",
                                          "Include_INI"};
 
 // Edit distance, for suggesting the key someone meant.
@@ -409,6 +446,7 @@ void apply_ini_setting(RenderOptions& o, const std::string& key_as_written,
     o.library_paths.push_back(value);
   } else if (key == "declare") {
     set_declare(o, value, what);
+  } else if (set_partial_bound(o, BoundName::ini_key, key, what, [&] { return value; })) {
   } else if (!apply_ini_animation(o, key, value, what) &&
              std::find(std::begin(kIgnoredIniKeys), std::end(kIgnoredIniKeys), key) ==
                  std::end(kIgnoredIniKeys)) {
@@ -452,6 +490,9 @@ void apply_switch(RenderOptions& o, const std::string& arg) {
   } else if (key.starts_with("j")) {
     on ? set_jitter(o, rest(1), arg) : void(o.jitter = false);
   } else if (apply_clock_switch(o, on, key, body, arg)) {
+  } else if (key.size() >= 2 && given(2) &&
+             set_partial_bound(o, BoundName::switch_key, key.substr(0, 2), arg,
+                               [&] { return rest(2); })) {
   } else if (key.starts_with("sf") && given(2)) {
     o.animation.subset_start = number(rest(2), arg);
   } else if (key.starts_with("ef") && given(2)) {
@@ -505,6 +546,7 @@ RenderOptions parse_render_arguments(const std::vector<std::string>& args) {
         "no scene file given (convray SCENE.pov, +ISCENE.pov, or Input_File_Name= "
         "in an INI file)");
   }
+  o.window = partial_window(o.partial, o.width, o.height);  // after +W and +H, wherever given
   refuse_special_output(o.output);
   o.output_is_folder = names_folder(o.output);
   o.output = resolve_output(o.output, o.scene);

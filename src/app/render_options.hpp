@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/animation.hpp"
+#include "app/partial_image.hpp"
 #include "app/usage_error.hpp"
 
 namespace convray::app {
@@ -25,6 +26,8 @@ struct RenderOptions {
   int aa_depth = 3;     // +R n: n x n samples where a pixel is supersampled
   bool jitter = false;  // +J[amount] / -J (reproducible either way)
   double jitter_amount = 1.0;
+  PartialImage partial;  // +SC +EC +SR +ER: only a rectangle of the picture
+  std::optional<render::PixelWindow> window;  // the rectangle's pixels, from `partial`
   int threads = 0;                                       // +WT n; 0: every core
   std::vector<std::string> library_paths;                // +L path
   std::vector<std::string> read_folders;                 // --allow-read DIR

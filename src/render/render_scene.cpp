@@ -18,31 +18,33 @@ namespace convray::render {
 
 namespace {
 
-// A rectangle of pixels [x0, x1) x [y0, y1).
-struct Tile {
-  int x0, y0, x1, y1;
-  uint64_t pixels() const { return uint64_t(x1 - x0) * uint64_t(y1 - y0); }
-};
-
-// Runs `work(tile, stats)` on every tile of a width x height film over TBB's threads, with
-// per-thread statistics summed into `total` at the end (integer sums: order-independent).
+// Runs `work(tile, stats)` on every tile of `area` (tiles of tile_size pixels from its corner)
+// over TBB's threads, with per-thread statistics summed into `total` at the end (integer sums:
+// order-independent). A pixel's value does not depend on its tile, so any area may be tiled.
 template <typename Work>
-void for_each_tile(int width, int height, int tile_size, RenderStats& total, Work&& work) {
-  const int tiles_x = (width + tile_size - 1) / tile_size;
-  const int tiles_y = (height + tile_size - 1) / tile_size;
+void for_each_tile(const PixelWindow& area, int tile_size, RenderStats& total, Work&& work) {
+  if (area.empty()) return;
+  const int tiles_x = (area.x1 - area.x0 + tile_size - 1) / tile_size;
+  const int tiles_y = (area.y1 - area.y0 + tile_size - 1) / tile_size;
   tbb::enumerable_thread_specific<RenderStats> per_thread;
   const tbb::blocked_range2d<int> all_tiles(0, tiles_y, 1, 0, tiles_x, 1);
   tbb::parallel_for(all_tiles, [&](const tbb::blocked_range2d<int>& range) {
     RenderStats& stats = per_thread.local();
     for (int ty = range.rows().begin(); ty != range.rows().end(); ++ty) {
       for (int tx = range.cols().begin(); tx != range.cols().end(); ++tx) {
-        const Tile tile{tx * tile_size, ty * tile_size, std::min((tx + 1) * tile_size, width),
-                        std::min((ty + 1) * tile_size, height)};
+        const int x0 = area.x0 + tx * tile_size, y0 = area.y0 + ty * tile_size;
+        const PixelWindow tile{x0, y0, std::min(x0 + tile_size, area.x1),
+                               std::min(y0 + tile_size, area.y1)};
         work(tile, stats);
       }
     }
   });
   for (const RenderStats& stats : per_thread) total += stats;
+}
+
+// The pixels to compute: the window (the whole picture when none is given).
+PixelWindow window_of(const RenderSettings& s) {
+  return s.window.value_or(PixelWindow{0, 0, s.width, s.height});
 }
 
 void check_settings(const RenderSettings& s) {
@@ -55,6 +57,10 @@ void check_settings(const RenderSettings& s) {
   }
   if (!(s.ray_offset >= 0.0)) {
     throw std::invalid_argument("render_scene: ray_offset must not be negative");
+  }
+  const PixelWindow& w = window_of(s);
+  if (!w.empty() && (w.x0 < 0 || w.y0 < 0 || w.x1 > s.width || w.y1 > s.height)) {
+    throw std::invalid_argument("render_scene: the window reaches outside the picture");
   }
 }
 
@@ -70,23 +76,26 @@ Vec3 supersampled_pixel(const Integrator& integrator, const SceneCamera& camera,
   return sum / double(positions.size() + 1);
 }
 
-// The first pass: every pixel's centre.
+// The first pass: the centre of every pixel of `area`. Progress counts the window's pixels.
 void render_centres(const Integrator& integrator, const SceneCamera& camera,
-                    const RenderSettings& settings, Progress* progress, RenderResult& result) {
+                    const RenderSettings& settings, const PixelWindow& area, Progress* progress,
+                    RenderResult& result) {
   Film& film = result.film;
-  for_each_tile(settings.width, settings.height, settings.tile_size, result.stats,
-                [&](const Tile& tile, RenderStats& stats) {
+  const PixelWindow window = window_of(settings);
+  for_each_tile(area, settings.tile_size, result.stats,
+                [&](const PixelWindow& tile, RenderStats& stats) {
                   for (int j = tile.y0; j < tile.y1; ++j) {
                     for (int i = tile.x0; i < tile.x1; ++i) {
                       film.set(i, j, integrator.trace_camera_ray(camera.primary_ray(i, j), stats));
                     }
                   }
-                  if (progress) progress->advance(tile.pixels());
+                  if (progress) progress->advance(tile.intersection(window).pixels());
                 });
 }
 
-// The second pass: pixels that differ from a neighbour get supersampled. The decisions read
-// the first pass only, so they do not depend on the order in which tiles finish.
+// The second pass: pixels of the window that differ from a neighbour get supersampled. The
+// decisions read the first pass only (the window and the ring of neighbours around it), so
+// they depend neither on the order in which tiles finish nor on the window's size.
 void antialias(const Integrator& integrator, const SceneCamera& camera,
                const RenderSettings& settings, RenderResult& result) {
   const AntialiasSettings aa{settings.aa_threshold, settings.aa_gamma,      settings.aa_depth,
@@ -94,8 +103,8 @@ void antialias(const Integrator& integrator, const SceneCamera& camera,
   const Film& first = result.film;
   const std::vector<uint8_t> flags = pixels_to_supersample(first, aa.threshold, aa.gamma);
   Film refined = first;
-  for_each_tile(settings.width, settings.height, settings.tile_size, result.stats,
-                [&](const Tile& tile, RenderStats& stats) {
+  for_each_tile(window_of(settings), settings.tile_size, result.stats,
+                [&](const PixelWindow& tile, RenderStats& stats) {
                   for (int j = tile.y0; j < tile.y1; ++j) {
                     for (int i = tile.x0; i < tile.x1; ++i) {
                       if (!flags[size_t(j) * size_t(settings.width) + size_t(i)]) continue;
@@ -106,6 +115,16 @@ void antialias(const Integrator& integrator, const SceneCamera& camera,
                   }
                 });
   result.film = std::move(refined);
+}
+
+// A partial render's picture: black outside the window, as POV-Ray 3.7 writes it (the ring of
+// neighbours that anti-aliasing read is cleared too).
+void clear_outside(const PixelWindow& window, Film& film) {
+  for (int j = 0; j < film.height(); ++j) {
+    for (int i = 0; i < film.width(); ++i) {
+      if (!window.contains(i, j)) film.set(i, j, Vec3(0.0));
+    }
+  }
 }
 
 // POV-Ray computes in the space of `assumed_gamma` and decodes at the end: a working value v
@@ -161,8 +180,14 @@ RenderResult render_scene(const scene::Scene& scene, const geometry::World& worl
   const Integrator integrator(scene, world, integrator_settings);
 
   RenderResult result{Film(settings.width, settings.height), {}};
-  render_centres(integrator, camera, settings, progress, result);
+  // Anti-aliasing compares each pixel with its four neighbours, so a window's first pass also
+  // covers the ring around it: its pixels then get exactly the full render's decisions.
+  const PixelWindow window = window_of(settings);
+  const PixelWindow traced =
+      settings.antialias ? window.grown(1, settings.width, settings.height) : window;
+  render_centres(integrator, camera, settings, traced, progress, result);
   if (settings.antialias) antialias(integrator, camera, settings, result);
+  if (settings.window) clear_outside(window, result.film);
   decode_assumed_gamma(scene.settings.assumed_gamma, result.film);
   if (!scene.settings.gamma_correction) turn_gamma_correction_off(result.film);
   if (progress) progress->finish();

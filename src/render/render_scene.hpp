@@ -7,10 +7,13 @@
 // are computed as POV-Ray 3.7 does, in g's space, and decoded (v -> v^g) at the end.
 //
 // Deterministic: a pixel depends only on its own rays (jitter is a hash of the seed and the
-// pixel), statistics are integer sums; one thread and sixteen give the same bytes.
+// pixel), statistics are integer sums; one thread and sixteen give the same bytes. So a
+// partial render (RenderSettings::window) gives exactly the full render's pixels there.
 #include <cstdint>
+#include <optional>
 
 #include "geometry/world.hpp"
+#include "render/pixel_window.hpp"
 #include "render/render_result.hpp"
 #include "scene/scene.hpp"
 
@@ -33,11 +36,14 @@ struct RenderSettings {
   // Secondary rays ignore crossings closer than this to their origin; 0: 1e-7 times the size
   // of the scene (its finite bounds' diagonal, or the camera's distance from the origin).
   double ray_offset = 0.0;
+  // A partial render (POV-Ray's +SR/+ER/+SC/+EC): only these pixels are computed, every other
+  // one stays black, as POV-Ray 3.7 writes them. Unset: the whole picture.
+  std::optional<PixelWindow> window;
 };
 
 // Renders `scene` whose objects `world` holds (built from the same scene). `progress`, if
-// given, hears of every pixel of the first pass done (width * height units) and is finished
-// at the end. Throws std::invalid_argument for settings out of range or a degenerate camera.
+// given, hears of every pixel of the first pass done (width * height units, or the window's
+// pixels) and is finished at the end. Throws std::invalid_argument for settings out of range or a degenerate camera.
 RenderResult render_scene(const scene::Scene& scene, const geometry::World& world,
                           const RenderSettings& settings, Progress* progress = nullptr);
 

@@ -1,7 +1,8 @@
 // The render-farm recipes of docs/render-farm.md, run as a user would: the GNU parallel script
 // on this machine's cores, and the Slurm job-array script with a stand-in `sbatch` (it records
 // what it was asked to submit) and each array task run as Slurm would run it. Either way the
-// frames must be byte-identical to one process rendering them all.
+// frames must be byte-identical to one process rendering them all. (Against Slurm itself, on a
+// single-node cluster the test starts: tests/slurm/render_farm_slurm_test.sh.)
 #include <gtest/gtest.h>
 
 #include <set>
