@@ -140,8 +140,10 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
                                      ? static_cast<const GeometrySource*>(args->geometryUserPtr)
                                      : &(*line->sources)[instance];
   if (source->kind == GeometrySource::Kind::triangle) {
-    const field::Triangle& t = source->triangles[args->primID];
-    if (triangle_may_cross(line->origin, line->direction, t, source->radius(args->primID))) {
+    const BoundingBall ball = source->balls ? source->balls[args->primID]
+                                            : triangle_bounding_ball(source->triangles[args->primID],
+                                                                     source->radius(args->primID));
+    if (may_cross(line->origin, line->direction, ball)) {
       line->triangles->push_back({source, args->primID});
     }
     return;

@@ -26,6 +26,7 @@ struct GeometrySource {
   const field::Segment* capsules = nullptr;
   const field::Arc* arcs = nullptr;
   const field::Triangle* triangles = nullptr;
+  const BoundingBall* balls = nullptr;  // triangles: their supports' (SupportIndex makes them)
   const double* radii = nullptr;  // per primitive, or null with `shared_radius`
   double shared_radius = 0.0;
   double margin = 0.0;  // absolute slack on the float boxes (see support_margin)

@@ -16,6 +16,7 @@ using detail::GeometrySource;
 struct SupportIndex::Impl {
   RTCScene scene = nullptr;
   std::vector<GeometrySource> sources;  // indexed by Embree's geomID, instances included
+  std::vector<std::vector<BoundingBall>> balls;  // of each triangle source's supports
   // The placed hierarchies, kept alive while `scene` refers to them.
   std::vector<std::shared_ptr<const TriangleSupports>> instances;
   long long embree_bytes = 0;  // this scene's own allocations
@@ -142,6 +143,13 @@ SupportIndex::SupportIndex(const SupportSources& in) : impl_(std::make_unique<Im
   for (GeometrySource& s : m.sources) {
     s.margin = margin;
     m.size += s.count;
+    if (s.kind != GeometrySource::Kind::triangle) continue;
+    std::vector<BoundingBall>& balls = m.balls.emplace_back();
+    balls.reserve(s.count);
+    for (uint32_t i = 0; i < s.count; ++i) {
+      balls.push_back(triangle_bounding_ball(s.triangles[i], s.radius(i)));
+    }
+    s.balls = balls.data();
   }
   detail::SceneBuild build;
   for (size_t g = 0; g < m.sources.size(); ++g) {
@@ -168,6 +176,7 @@ size_t SupportIndex::instance_count() const { return impl_->instances.size(); }
 size_t SupportIndex::memory_bytes() const {
   size_t bytes = size_t(impl_->embree_bytes) + impl_->sources.capacity() * sizeof(GeometrySource);
   for (const auto& prebuilt : impl_->instances) bytes += prebuilt->memory_bytes();
+  for (const auto& balls : impl_->balls) bytes += balls.capacity() * sizeof(BoundingBall);
   return bytes;
 }
 

@@ -91,23 +91,27 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
   return join(span, sphere_span(origin, direction, segment.b, radius));
 }
 
-bool triangle_may_cross(const Vec3& origin, const Vec3& direction,
-                        const field::Triangle& triangle, double radius) {
+BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radius) {
   const Vec3 centroid = (triangle.a + triangle.b + triangle.c) * (1.0 / 3.0);
   const double reach2 = std::max({glm::dot(triangle.a - centroid, triangle.a - centroid),
                                   glm::dot(triangle.b - centroid, triangle.b - centroid),
                                   glm::dot(triangle.c - centroid, triangle.c - centroid)});
-  // The squared distance from the centroid to the line against (reach + R)^2, bounded by
-  // 2 reach^2 + 2 R^2 so that no square root is taken: a looser ball, still a sure rejection.
-  const Vec3 w = origin - centroid;
-  const double along = glm::dot(w, direction);
-  return glm::dot(w, w) - along * along <= 2.0 * (reach2 + radius * radius);
+  return {centroid, std::sqrt(reach2) + radius};
+}
+
+bool may_cross(const Vec3& origin, const Vec3& direction, const BoundingBall& ball) {
+  const Vec3 w = ball.center - origin;
+  const double ww = glm::dot(w, w), along = glm::dot(w, direction);
+  const double r2 = ball.radius * ball.radius;
+  // The squared distance to the line loses up to a few ulps of |w|^2 to cancellation, and the
+  // ball's radius was rounded: the slack covers both many times over.
+  return ww - along * along <= r2 + 1e-12 * (ww + r2);
 }
 
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius) {
   const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
-  if (!triangle_may_cross(origin, direction, triangle, radius)) return {};
+  if (!may_cross(origin, direction, triangle_bounding_ball(triangle, radius))) return {};
   Vec3 n = triangle_normal(triangle);
   const double n_length = glm::length(n);
   Span span{};

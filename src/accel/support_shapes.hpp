@@ -27,11 +27,18 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
 // the three edge capsules. Convex, so the union of their intervals is one interval.
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius);
-// A cheap test that the line may cross the triangle's support: it crosses a ball around the
-// centroid that holds the support (false means the span is empty). No square root: the
-// Embree callbacks run it on every triangle whose box the line crosses.
-bool triangle_may_cross(const Vec3& origin, const Vec3& direction,
-                        const field::Triangle& triangle, double radius);
+// A ball that holds the triangle's support: around its centroid, of radius the farthest
+// corner plus R.
+struct BoundingBall {
+  Vec3 center;
+  double radius;
+};
+BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radius);
+// A cheap test that the line may cross a support: it crosses the support's bounding ball
+// (false means the span is empty; a rounding slack keeps every grazing line in). No square
+// root: the Embree callbacks run it on every triangle whose box the line crosses, with the
+// balls made once per mesh.
+bool may_cross(const Vec3& origin, const Vec3& direction, const BoundingBall& ball);
 // Arc swept by a ball (a piece of a torus, not convex): a conservative interval, the ball
 // around the circle's centre of radius (arc radius + R) cut by the slab |height| <= R.
 Span arc_span(const Vec3& origin, const Vec3& direction, const field::Arc& arc, double radius);

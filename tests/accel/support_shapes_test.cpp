@@ -111,6 +111,36 @@ TEST(SupportShapes, SpansAreExactForSpheresCapsulesAndTriangles) {
   EXPECT_GT(hits, 150);  // both outcomes are exercised
 }
 
+// The bounding ball's test must keep every line that crosses the support, grazing ones and
+// far origins too (where the distance to the line loses digits to cancellation): the exact
+// span against it, on lines aimed at the support's edge.
+TEST(SupportShapes, BoundingBallKeepsEveryCrossingLine) {
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> radius(0.01, 0.8), unit(0.0, 1.0);
+  int crossings = 0, grazing = 0, rejected = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double r = radius(rng);
+    const field::Triangle t{random_point(rng, 1), random_point(rng, 1),
+                            trial % 7 ? random_point(rng, 1) : Vec3(0.0)};
+    // Through a point about R from a point of the triangle, from up to 10^4 away.
+    const Vec3 q = t.a + unit(rng) * (t.b - t.a) + unit(rng) * unit(rng) * (t.c - t.a);
+    const Vec3 d = random_unit(rng);
+    const Vec3 side = glm::normalize(glm::cross(d, random_unit(rng)));
+    const Vec3 through = q + side * (r * (0.9 + 0.2 * unit(rng)));
+    const Vec3 o = through - std::pow(10.0, 4.0 * unit(rng)) * d;
+    const Span exact = triangle_span(o, d, t, r);
+    const bool kept = may_cross(o, d, triangle_bounding_ball(t, r));
+    rejected += !kept;
+    if (exact.empty()) continue;
+    ++crossings;
+    grazing += exact.exit - exact.enter < 0.5 * r;  // a chord of a ball R: 0.03 R deep
+    EXPECT_TRUE(kept) << trial;
+  }
+  EXPECT_GT(crossings, 5000);
+  EXPECT_GT(grazing, 50);
+  EXPECT_GT(rejected, 100);  // and it does reject lines
+}
+
 TEST(SupportShapes, ArcSpanHoldsTheWholeCrossing) {
   std::mt19937_64 rng(14);
   for (int trial = 0; trial < 300; ++trial) {
