@@ -74,8 +74,9 @@ void bind_field_function(py::module_& m) {
         "its exact gradient: values (n,) and gradients (n, 3), float64. Each triangle is "
         "convolved in closed form with the quartic kernel s (1 - r^2/R^2)^2 of support "
         "R = radius (the values of `convray field --mesh FILE --radius R --strength s`), or "
-        "with kernel=\"cauchy\", McCormack and Sherstyuk's s / (1 + sharpness^2 r^2)^2 cut "
-        "off beyond R (docs/kernels.md). Runs on every core, without the GIL.");
+        "with kernel=\"cauchy\", McCormack and Sherstyuk's s / (1 + sharpness^2 r^2)^2, each "
+        "triangle's field cut to zero outside its bounding box grown by R (docs/kernels.md). "
+        "Runs on every core, without the GIL.");
 }
 
 }  // namespace convray::python
