@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "app/command_render.hpp"
+#include "app/ini_file.hpp"
 #include "app/render_options.hpp"
 #include "app/size_check.hpp"
 #include "core/image_file.hpp"
@@ -103,6 +104,11 @@ void add_options(std::vector<std::string>& args, const py::kwargs& options) {
 app::RenderOptions render_options(const SceneSource& source, int width, int height, double clock,
                                   const py::kwargs& options) {
   if (!std::isfinite(clock)) throw py::value_error("clock must be finite");
+  if (!source.is_text && app::is_ini_argument(source.text)) {
+    // An INI file describes frames and files to write; render() makes one picture.
+    throw py::value_error("render() takes a scene, not an INI file: " + source.text +
+                          " (render its Input_File_Name with clock=...)");
+  }
   std::vector<std::string> args = {source.is_text ? kTextName : source.text,
                                    "--width=" + std::to_string(width),
                                    "--height=" + std::to_string(height),

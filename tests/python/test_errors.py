@@ -107,5 +107,7 @@ def test_missing_scene_and_bad_options(tmp_path):
         convray.render(scene, 16, 16, antialiasing=0.3)
     with pytest.raises(ValueError, match="--width"):
         convray.render(scene, 0, 16)
+    with pytest.raises(ValueError, match="not an INI file"):
+        convray.render("walk.ini", 16, 16)
     with pytest.raises(ValueError, match="--aa-depth"):
         convray.render(scene, 16, 16, aa_depth=20)
