@@ -82,6 +82,16 @@ def read_png(path):
     return rows.reshape(height, width, 3).astype(np.uint8)
 
 
+def write_png(path, rgb):
+    """An (H, W, 3) uint8 array as an 8-bit RGB PNG (no filtering)."""
+    rows = b"".join(b"\x00" + row.tobytes() for row in np.asarray(rgb, dtype=np.uint8))
+    chunk = lambda kind, body: (struct.pack(">I", len(body)) + kind + body +
+                                struct.pack(">I", zlib.crc32(kind + body)))
+    header = struct.pack(">IIBBBBB", rgb.shape[1], rgb.shape[0], 8, 2, 0, 0, 0)
+    Path(path).write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) +
+                           chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+
+
 def png_bytes_of(image):
     """What the PNG stores for render()'s sRGB floats: round(255 v), halves up, in float32."""
     scaled = (image[..., :3].astype(np.float32) * np.float32(255)).astype(np.float64)

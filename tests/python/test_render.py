@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import convray
-from conftest import SOURCE_DIR, png_bytes_of, read_png, run_cli
+from conftest import SOURCE_DIR, png_bytes_of, read_png, run_cli, write_png
 
 SCENE = """#version 3.7;
 global_settings { assumed_gamma 1.0 }
@@ -79,3 +79,21 @@ def test_declare_and_library_options(tmp_path):
                                library=str(tmp_path / "inc"))
     png = cli_png(scene, tmp_path, "+W24", "+H24", "Declare=Size=0.8", "+L" + str(tmp_path / "inc"))
     np.testing.assert_array_equal(png_bytes_of(image), png)
+
+
+def test_image_maps_read_through_the_plugin_beside_the_module(tmp_path):
+    # Scenes read images through libconvray_oiio.so, which the module finds beside itself
+    # (inside python3, not beside the program).
+    texture = np.zeros((4, 4, 3), dtype=np.uint8)
+    texture[::2, ::2] = [250, 40, 30]
+    texture[1::2, 1::2] = [20, 60, 240]
+    write_png(tmp_path / "tex.png", texture)
+    scene = tmp_path / "mapped.pov"
+    scene.write_text("#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n"
+                     "camera { location <0.5, 0.5, -2> look_at <0.5, 0.5, 0> }\n"
+                     "light_source { <0, 0, -10> color rgb 1 }\n"
+                     'plane { z, 0 pigment { image_map { png "tex.png" } } '
+                     "finish { ambient 1 diffuse 0 } }\n")
+    image = convray.render(scene, 32, 32)
+    np.testing.assert_array_equal(png_bytes_of(image), cli_png(scene, tmp_path, "+W32", "+H32"))
+    assert len(np.unique(png_bytes_of(image).reshape(-1, 3), axis=0)) >= 2
