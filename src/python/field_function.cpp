@@ -1,7 +1,5 @@
 // convray.field(V, F, points, radius, strength, kernel): the summed raw field of a triangle
 // soup and its exact gradient, as `convray field --mesh FILE --radius R` computes them.
-#include <cmath>
-
 #include "app/soup_triangles.hpp"
 #include "implicit/mesh_field.hpp"
 #include "implicit/surface.hpp"
@@ -11,18 +9,6 @@
 #include "python/kernel_name.hpp"
 
 namespace convray::python {
-
-field::Kernel kernel_from(const std::string& name, double sharpness) {
-  if (name == "quartic") return {};
-  if (name == "cauchy") {
-    if (!(sharpness > 0.0 && std::isfinite(sharpness))) {
-      throw py::value_error("kernel cauchy: the sharpness s must be positive, found " +
-                            std::to_string(sharpness));
-    }
-    return {field::KernelType::cauchy, sharpness};
-  }
-  throw py::value_error("kernel must be \"quartic\" or \"cauchy\", got \"" + name + "\"");
-}
 
 namespace {
 
