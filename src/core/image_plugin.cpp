@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string_view>
 #include <system_error>
 
 #include "core/oiio_plugin_api.hpp"
@@ -26,8 +27,17 @@ struct Plugin {
 };
 
 // Beside the running program, the way $ORIGIN finds a library: a build folder and an
-// installed copy both carry the plugin next to the executable.
+// installed copy both carry the plugin next to the executable. When this code is itself in a
+// shared object (the Python module, src/python/), the program is python3, so the plugin is
+// looked for beside that object instead, where the build puts a link to it.
 fs::path plugin_file() {
+  Dl_info self{};
+  if (::dladdr(reinterpret_cast<const void*>(&plugin_file), &self) != 0 && self.dli_fname &&
+      std::string_view(self.dli_fname).ends_with(".so")) {
+    std::error_code error;
+    const fs::path object = fs::absolute(fs::path(self.dli_fname), error);
+    if (!error) return object.parent_path() / kPluginName;
+  }
   std::error_code error;
   const fs::path program = fs::read_symlink("/proc/self/exe", error);
   return (error ? fs::path(".") : program.parent_path()) / kPluginName;
