@@ -24,6 +24,7 @@ packages=(
   povray povray-examples time  # reference renders and timings (bench/, comparison scripts)
   ffmpeg parallel  # --video assembles frames; GNU parallel spreads frames (docs/render-farm.md)
   slurm-wlm munge  # a single-node Slurm for tests/slurm/render_farm_slurm_test.sh (docs/render-farm.md)
+  libsdl2-dev xvfb xdotool x11-utils imagemagick  # +D's window (src/display/); its tests on Xvfb (docs/view.md)
 )
 missing=()
 for p in "${packages[@]}"; do
