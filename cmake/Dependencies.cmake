@@ -8,6 +8,7 @@ find_package(OpenImageIO CONFIG REQUIRED)  # every other image format, in a plug
 find_package(embree 3 CONFIG REQUIRED)
 find_package(pegtl CONFIG REQUIRED)
 find_package(Freetype REQUIRED)
+find_package(SDL2 CONFIG REQUIRED)  # the +D preview window (src/display/)
 
 # Debian's OpenImageIO config names /usr/include/opencv4 as an include directory, and CMake
 # refuses a missing one; we never use OpenCV, so drop it instead of installing libopencv-dev.

@@ -25,6 +25,7 @@ packages=(
   ffmpeg parallel  # --video assembles frames; GNU parallel spreads frames (docs/render-farm.md)
   slurm-wlm munge  # a single-node Slurm for tests/slurm/render_farm_slurm_test.sh (docs/render-farm.md)
   pybind11-dev python3-dev python3-numpy python3-pytest  # import convray (docs/python.md)
+  libsdl2-dev xvfb xdotool x11-utils imagemagick  # +D's window (src/display/); its tests on Xvfb (docs/view.md)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -20,6 +20,7 @@
 #include "app/geometry_object_queries.hpp"
 #include "app/size_check.hpp"
 #include "app/video.hpp"
+#include "display/preview.hpp"
 #include "geometry/world.hpp"
 #include "implicit/support_cache.hpp"
 #include "core/image_file.hpp"
@@ -116,11 +117,19 @@ void print_stats(const render::RenderStats& s, const PhaseTimes& t,
 class FrameRenderer {
  public:
   FrameRenderer(const RenderOptions& options, const FramePlan& plan, std::ostream& out,
-                std::ostream& err, CommandStep& step)
-      : o_(options), plan_(plan), out_(out), err_(err), step_(step) {}
+                std::ostream& err, CommandStep& step, display::Preview* preview)
+      : o_(options), plan_(plan), out_(out), err_(err), step_(step), preview_(preview) {}
 
-  // Parses the frame's scene, builds it, renders it and writes `file`.
+  // Parses the frame's scene, builds it, renders it and writes `file`; with a preview window,
+  // on a thread of its own while this one keeps the window live.
   void render(const FrameClock& frame, size_t position, const std::string& file) {
+    if (!preview_) return render_here(frame, position, file);
+    const std::string label = plan_.animated ? progress_label(frame, position) : "";
+    preview_->run(label, [&] { render_here(frame, position, file); });
+  }
+
+ private:
+  void render_here(const FrameClock& frame, size_t position, const std::string& file) {
     PhaseTimes times;
     Clock::time_point start = Clock::now();
     const std::string label = plan_.animated ? " (" + progress_label(frame, position) + ")" : "";
@@ -145,8 +154,10 @@ class FrameRenderer {
     Progress progress(progress_label(frame, position), pixels, err_,
                       Progress::stderr_is_terminal());
     const render::RenderResult result =
-        render::render_scene(parsed.scene, world, render_settings(o_), &progress);
+        render::render_scene(parsed.scene, world, render_settings(o_), &progress, preview_);
     times.render = seconds_since(start);
+    // The finished film replaces the tiles: what the window shows is then what is written.
+    if (preview_) preview_->show_picture(result.film.rgb());
 
     start = Clock::now();
     step_.now("writing " + file, "give a smaller +W and +H");
@@ -157,7 +168,6 @@ class FrameRenderer {
     if (o_.stats) print_stats(result.stats, times, hierarchies_, out_);
   }
 
- private:
   std::string progress_label(const FrameClock& frame, size_t position) const {
     if (!plan_.animated) return "render";
     return "frame " + std::to_string(frame.frame_number) + " (" + std::to_string(position + 1) +
@@ -193,6 +203,7 @@ class FrameRenderer {
   std::ostream& out_;
   std::ostream& err_;
   CommandStep& step_;
+  display::Preview* preview_;  // null: no +D, or no display to show it on
 };
 
 // Everything that can be checked before the work starts: the destination, the image's memory,
@@ -234,6 +245,15 @@ void warn_about_missing_library_folders(const RenderOptions& o, std::ostream& er
   }
 }
 
+display::PreviewOptions preview_options(const RenderOptions& o) {
+  display::PreviewOptions p;
+  p.scene = o.scene;
+  p.width = o.width;
+  p.height = o.height;
+  p.window = o.window;
+  return p;
+}
+
 std::string file_of(const RenderOptions& o, const FramePlan& plan, const FrameClock& frame) {
   return plan.animated ? frame_file_name(o.output, frame.frame_number, plan.name_digits) : o.output;
 }
@@ -259,8 +279,10 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err,
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                     size_t(o.threads));
   }
+  std::unique_ptr<display::Preview> preview;
+  if (o.display) preview = display::Preview::open(preview_options(o), err);
   const Clock::time_point start = Clock::now();
-  FrameRenderer renderer(o, plan, out, err, step);
+  FrameRenderer renderer(o, plan, out, err, step, preview.get());
   std::vector<std::string> files;  // for the video only: millions of frames need no list
   size_t skipped = 0;
   for (size_t i = 0; i < plan.frames.size(); ++i) {
@@ -284,6 +306,10 @@ void render_frames(const RenderOptions& o, std::ostream& out, std::ostream& err,
     assemble_video(files, o.video, o.video_fps);
     if (!o.quiet) out << "convray: wrote " << o.video << " (" << files.size() << " frames)\n";
   }
+  if (preview && o.pause_when_done && preview->seen()) {
+    if (!o.quiet) err << "convray: +P: press a key in the preview window, or close it\n";
+    preview->wait_until_dismissed();
+  }
 }
 
 }  // namespace
@@ -293,6 +319,13 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
   try {
     render_frames(options, out, err, step);
     return 0;
+  } catch (const render::RenderCancelled&) {
+    // The file being rendered was not written (an earlier one of its name is intact); frames
+    // already written stay.
+    err << "convray: " << options.scene
+        << ": render stopped: the preview window was closed (or Escape or q pressed in it); "
+           "the image being rendered was not written\n";
+    return 1;
   } catch (const InputError& e) {
     err << e.what() << "\n";
     return 2;

@@ -53,6 +53,12 @@ const char* const kRenderUsage =
     "  --fps N             the video's frame rate (default 25)\n"
     "  --list-frames       print each frame's number, clock and file (tab-separated); render\n"
     "                      nothing (for render-farm scripts: docs/render-farm.md)\n"
+    "Preview (POV-Ray's; docs/view.md):\n"
+    "  --display           +D, Display=on: a window fills in tile by tile as the picture\n"
+    "                      renders; closing it (or Escape, q) stops the render, nothing\n"
+    "                      written. Without a display: said once, rendered as with -D\n"
+    "  --pause             +P, Pause_When_Done=on: the window stays open at the end until\n"
+    "                      a key is pressed in it or it is closed (-P: it closes)\n"
     "Output:\n"
     "  --stats             print rays, timings and memory after each image\n"
     "  --quiet             no summary line\n"
@@ -61,8 +67,8 @@ const char* const kRenderUsage =
     "                      frames may not fit in the free disk space\n"
     "  -h, --help          this message\n"
     "\n"
-    "POV-Ray's +D/-D (display), +V/-V, +P/-P, +X/-X, +F?, +Q? and +G?/-G? (console output)\n"
-    "are accepted and do nothing. INI files take POV-Ray's keys (Width=, Final_Frame=,\n"
+    "POV-Ray's +V/-V, +X/-X, +F?, +Q? and +G?/-G? (console output) are accepted and do\n"
+    "nothing. INI files take POV-Ray's keys (Width=, Final_Frame=,\n"
     "Cyclic_Animation=on, Declare=, Library_Path=, ...), raw switches and [sections].\n"
     "Examples:\n"
     "  convray +Iscenes/soup.pov +Osoup.png +W800 +H600 +A0.3 -D +WT2\n"
@@ -162,9 +168,9 @@ bool apply_clock_switch(RenderOptions& o, bool on, const std::string& key, const
 }
 
 bool is_ignored_switch(const std::string& key) {
-  // Display, verbosity, pause, abort key, console streams, quality, file type: no effect.
-  return key.starts_with("d") || key == "v" || key == "p" || key == "x" || key.starts_with("g") ||
-         key.starts_with("q") || key.starts_with("f");
+  // Verbosity, abort key, console streams, quality, file type: no effect.
+  return key == "v" || key == "x" || key.starts_with("g") || key.starts_with("q") ||
+         key.starts_with("f");
 }
 
 // `--name VALUE` or `--name=VALUE`; advances `i` past a separate value.
@@ -259,6 +265,10 @@ bool apply_long_option(RenderOptions& o, const std::vector<std::string>& args, s
     set_declare(o, option_value(args, i, name), name);
   } else if (set_partial_bound(o, BoundName::long_option, name, name,
                                [&] { return option_value(args, i, name); })) {
+  } else if (name == "--display") {
+    o.display = true;
+  } else if (name == "--pause") {
+    o.pause_when_done = true;
   } else if (name == "--stats") {
     o.stats = true;
   } else if (name == "--quiet") {
@@ -271,11 +281,10 @@ bool apply_long_option(RenderOptions& o, const std::vector<std::string>& args, s
   return true;
 }
 
-// INI keys that change nothing here: display, console streams, file types and bit depths,
+// INI keys that change nothing here: display gamma and palette, console streams, file types and bit depths,
 // bounding controls. Keys that would change the picture in ways convray does not support
 // (shell hooks, alpha) are not here, so they are errors, like unknown keys.
-constexpr std::string_view kIgnoredIniKeys[] = {"display",          "verbose",
-                                                "pause_when_done",  "test_abort",
+constexpr std::string_view kIgnoredIniKeys[] = {"verbose",          "test_abort",
                                                 "test_abort_count", "draw_vistas",
                                                 "display_gamma",    "preview_start_size",
                                                 "preview_end_size", "video_mode",
@@ -323,6 +332,8 @@ constexpr std::string_view kIniKeys[] = {"Input_File_Name",
                                          "End_Column",
                                          "Start_Row",
                                          "End_Row",
+                                         "Display",
+                                         "Pause_When_Done",
                                          "Include_INI"};
 
 // Edit distance, for suggesting the key someone meant.
@@ -446,6 +457,10 @@ void apply_ini_setting(RenderOptions& o, const std::string& key_as_written,
     o.library_paths.push_back(value);
   } else if (key == "declare") {
     set_declare(o, value, what);
+  } else if (key == "display") {
+    o.display = boolean(value, what);
+  } else if (key == "pause_when_done") {
+    o.pause_when_done = boolean(value, what);
   } else if (set_partial_bound(o, BoundName::ini_key, key, what, [&] { return value; })) {
   } else if (!apply_ini_animation(o, key, value, what) &&
              std::find(std::begin(kIgnoredIniKeys), std::end(kIgnoredIniKeys), key) ==
@@ -499,6 +514,10 @@ void apply_switch(RenderOptions& o, const std::string& arg) {
     o.animation.subset_end = number(rest(2), arg);
   } else if (key == "c") {
     o.continue_trace = on;
+  } else if (key.starts_with("d")) {
+    o.display = on;  // POV-Ray's +Dxy: x and y choose a display type and palette; one here
+  } else if (key == "p") {
+    o.pause_when_done = on;
   } else if (!is_ignored_switch(key)) {
     throw UsageError("unknown switch '" + arg + "'; run 'convray --help' for the supported ones");
   }

@@ -38,6 +38,8 @@ struct RenderOptions {
   std::string video;            // --video FILE: assemble the frames with ffmpeg
   double video_fps = 25.0;      // --fps
   bool list_frames = false;     // --list-frames: print the frames (number, clock, file) only
+  bool display = false;         // +D / Display=on / --display: the preview window (display/)
+  bool pause_when_done = false;  // +P / Pause_When_Done=on / --pause: it stays open at the end
   bool stats = false;           // --stats
   bool quiet = false;           // --quiet: no summary line
   bool force = false;           // --force: render an image larger than the memory estimate allows
@@ -45,8 +47,8 @@ struct RenderOptions {
 
 // Reads the arguments after the program name. POV-Ray's switches are
 // case-insensitive and start with + (on) or - (off); unknown ones are errors,
-// never silently ignored, except the display and console switches POV-Ray users
-// habitually pass (+D -D +V -V +P -P -GA ...), which do nothing here. An argument
+// never silently ignored, except the console switches POV-Ray users habitually pass
+// (+V -V -GA +X ...), which do nothing here. An argument
 // ending in .ini (or .ini[Section]) is an INI file, read in place (ini_file.hpp).
 // Throws UsageError, or InputError (file:line:col) for a bad line in an INI file.
 RenderOptions parse_render_arguments(const std::vector<std::string>& args);

@@ -64,6 +64,55 @@ void check_settings(const RenderSettings& s) {
   }
 }
 
+// POV-Ray computes in the space of `assumed_gamma` and decodes at the end: a working value v
+// is the linear value v^gamma (POV-Ray 3.7 with assumed_gamma 2.2 writes background
+// <0.5,0.2,0.9> as the sRGB bytes of <0.5^2.2, ...>: 128, 48, 230; a diffuse value 0.5313
+// comes out as 0.2487 = 0.5313^2.2). Scenes with assumed_gamma 1 are untouched.
+//
+// POV-Ray 3.7 renders scenes older than 3.7 without assumed_gamma with gamma correction off:
+// a computed 0.3 is written as the byte 77, not as its sRGB encoding 149. The film holds
+// linear light that the image writer encodes, so such a film is decoded here: the writer's
+// encoding then gives back the computed value.
+//
+// One pixel at a time, for the film's end and for the tiles an observer sees on the way; the
+// value is rounded to float between the two steps, as the film stores it.
+Vec3 output_light(const scene::GlobalSettings& g, Vec3 c) {
+  if (g.assumed_gamma != 1.0 && g.assumed_gamma > 0.0) {
+    c = glm::pow(glm::max(c, Vec3(0.0)), Vec3(g.assumed_gamma));
+    c = Vec3(float(c.x), float(c.y), float(c.z));
+  }
+  if (g.gamma_correction) return c;
+  const auto decode = [](double v) {
+    if (!(v > 0.0)) return 0.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  return Vec3(decode(c.x), decode(c.y), decode(c.z));
+}
+
+void finish_film(const scene::GlobalSettings& g, Film& film) {
+  if (g.gamma_correction && (g.assumed_gamma == 1.0 || !(g.assumed_gamma > 0.0))) return;
+  for (int j = 0; j < film.height(); ++j) {
+    for (int i = 0; i < film.width(); ++i) film.set(i, j, output_light(g, film.at(i, j)));
+  }
+}
+
+// Hands `observer` the pixels of `tile` inside the window, as the film will end them.
+void report_tile(RenderObserver* observer, const scene::GlobalSettings& g, const Film& film,
+                 const PixelWindow& tile, const PixelWindow& window, bool refinement) {
+  if (!observer) return;
+  const PixelWindow area = tile.intersection(window);
+  if (area.empty()) return;
+  std::vector<float> rgb;
+  rgb.reserve(3 * area.pixels());
+  for (int j = area.y0; j < area.y1; ++j) {
+    for (int i = area.x0; i < area.x1; ++i) {
+      const Vec3 c = output_light(g, film.at(i, j));
+      rgb.insert(rgb.end(), {float(c.x), float(c.y), float(c.z)});
+    }
+  }
+  observer->tile_done({area, rgb, refinement});
+}
+
 // The mean colour of pixel (i, j)'s supersamples and its first-pass `centre` sample.
 Vec3 supersampled_pixel(const Integrator& integrator, const SceneCamera& camera, int i, int j,
                         const Vec3& centre, const AntialiasSettings& aa, RenderStats& stats) {
@@ -79,6 +128,7 @@ Vec3 supersampled_pixel(const Integrator& integrator, const SceneCamera& camera,
 // The first pass: the centre of every pixel of `area`. Progress counts the window's pixels.
 void render_centres(const Integrator& integrator, const SceneCamera& camera,
                     const RenderSettings& settings, const PixelWindow& area, Progress* progress,
+                    RenderObserver* observer, const scene::GlobalSettings& g,
                     RenderResult& result) {
   Film& film = result.film;
   const PixelWindow window = window_of(settings);
@@ -90,6 +140,7 @@ void render_centres(const Integrator& integrator, const SceneCamera& camera,
                     }
                   }
                   if (progress) progress->advance(tile.intersection(window).pixels());
+                  report_tile(observer, g, film, tile, window, false);
                 });
 }
 
@@ -97,7 +148,8 @@ void render_centres(const Integrator& integrator, const SceneCamera& camera,
 // decisions read the first pass only (the window and the ring of neighbours around it), so
 // they depend neither on the order in which tiles finish nor on the window's size.
 void antialias(const Integrator& integrator, const SceneCamera& camera,
-               const RenderSettings& settings, RenderResult& result) {
+               const RenderSettings& settings, RenderObserver* observer,
+               const scene::GlobalSettings& g, RenderResult& result) {
   const AntialiasSettings aa{settings.aa_threshold, settings.aa_gamma,      settings.aa_depth,
                              settings.jitter,       settings.jitter_amount, settings.seed};
   const Film& first = result.film;
@@ -113,6 +165,7 @@ void antialias(const Integrator& integrator, const SceneCamera& camera,
                       refined.set(i, j, mean);
                     }
                   }
+                  report_tile(observer, g, refined, tile, tile, true);
                 });
   result.film = std::move(refined);
 }
@@ -123,36 +176,6 @@ void clear_outside(const PixelWindow& window, Film& film) {
   for (int j = 0; j < film.height(); ++j) {
     for (int i = 0; i < film.width(); ++i) {
       if (!window.contains(i, j)) film.set(i, j, Vec3(0.0));
-    }
-  }
-}
-
-// POV-Ray computes in the space of `assumed_gamma` and decodes at the end: a working value v
-// is the linear value v^gamma (POV-Ray 3.7 with assumed_gamma 2.2 writes background
-// <0.5,0.2,0.9> as the sRGB bytes of <0.5^2.2, ...>: 128, 48, 230; a diffuse value 0.5313
-// comes out as 0.2487 = 0.5313^2.2). Scenes with assumed_gamma 1 are untouched.
-void decode_assumed_gamma(double gamma, Film& film) {
-  if (gamma == 1.0 || !(gamma > 0.0)) return;
-  for (int j = 0; j < film.height(); ++j) {
-    for (int i = 0; i < film.width(); ++i) {
-      film.set(i, j, glm::pow(glm::max(film.at(i, j), Vec3(0.0)), Vec3(gamma)));
-    }
-  }
-}
-
-// POV-Ray 3.7 renders scenes older than 3.7 without assumed_gamma with gamma correction off:
-// a computed 0.3 is written as the byte 77, not as its sRGB encoding 149. The film holds
-// linear light that the image writer encodes, so such a film is decoded here: the writer's
-// encoding then gives back the computed value.
-void turn_gamma_correction_off(Film& film) {
-  const auto decode = [](double c) {
-    if (!(c > 0.0)) return 0.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-  };
-  for (int j = 0; j < film.height(); ++j) {
-    for (int i = 0; i < film.width(); ++i) {
-      const Vec3 c = film.at(i, j);
-      film.set(i, j, Vec3(decode(c.x), decode(c.y), decode(c.z)));
     }
   }
 }
@@ -170,7 +193,8 @@ double automatic_ray_offset(const scene::Scene& scene, const geometry::World& wo
 }
 
 RenderResult render_scene(const scene::Scene& scene, const geometry::World& world,
-                          const RenderSettings& settings, Progress* progress) {
+                          const RenderSettings& settings, Progress* progress,
+                          RenderObserver* observer) {
   check_settings(settings);
   const SceneCamera camera(scene.camera, settings.width, settings.height);
   IntegratorSettings integrator_settings;
@@ -185,11 +209,11 @@ RenderResult render_scene(const scene::Scene& scene, const geometry::World& worl
   const PixelWindow window = window_of(settings);
   const PixelWindow traced =
       settings.antialias ? window.grown(1, settings.width, settings.height) : window;
-  render_centres(integrator, camera, settings, traced, progress, result);
-  if (settings.antialias) antialias(integrator, camera, settings, result);
+  render_centres(integrator, camera, settings, traced, progress, observer, scene.settings,
+                 result);
+  if (settings.antialias) antialias(integrator, camera, settings, observer, scene.settings, result);
   if (settings.window) clear_outside(window, result.film);
-  decode_assumed_gamma(scene.settings.assumed_gamma, result.film);
-  if (!scene.settings.gamma_correction) turn_gamma_correction_off(result.film);
+  finish_film(scene.settings, result.film);
   if (progress) progress->finish();
   return result;
 }

@@ -14,6 +14,7 @@
 
 #include "geometry/world.hpp"
 #include "render/pixel_window.hpp"
+#include "render/render_observer.hpp"
 #include "render/render_result.hpp"
 #include "scene/scene.hpp"
 
@@ -43,9 +44,12 @@ struct RenderSettings {
 
 // Renders `scene` whose objects `world` holds (built from the same scene). `progress`, if
 // given, hears of every pixel of the first pass done (width * height units, or the window's
-// pixels) and is finished at the end. Throws std::invalid_argument for settings out of range or a degenerate camera.
+// pixels) and is finished at the end. `observer`, if given, is handed each finished tile (a
+// preview window); what it throws (RenderCancelled) stops the render and leaves here. Throws
+// std::invalid_argument for settings out of range or a degenerate camera.
 RenderResult render_scene(const scene::Scene& scene, const geometry::World& world,
-                          const RenderSettings& settings, Progress* progress = nullptr);
+                          const RenderSettings& settings, Progress* progress = nullptr,
+                          RenderObserver* observer = nullptr);
 
 // The offset render_scene uses when RenderSettings::ray_offset is 0.
 double automatic_ray_offset(const scene::Scene& scene, const geometry::World& world);

@@ -99,6 +99,23 @@ TEST(RenderOptions, ConsoleSwitchesPovRayUsersPassAreAccepted) {
   EXPECT_NO_THROW(parse({"s.pov", "+D", "-D", "-V", "+P", "-GA", "+Q9", "+FN"}));
 }
 
+TEST(RenderOptions, DisplayAndPauseAsPovRaySpellsThem) {
+  EXPECT_FALSE(parse({"s.pov"}).display);
+  EXPECT_FALSE(parse({"s.pov"}).pause_when_done);
+  EXPECT_TRUE(parse({"s.pov", "+D"}).display);
+  EXPECT_TRUE(parse({"s.pov", "+d"}).display);
+  EXPECT_TRUE(parse({"s.pov", "+D0"}).display);  // POV-Ray's +Dxy: display type and palette
+  EXPECT_FALSE(parse({"s.pov", "+D", "-D"}).display);
+  EXPECT_TRUE(parse({"s.pov", "--display"}).display);
+  EXPECT_TRUE(parse({"s.pov", "Display=on"}).display);
+  EXPECT_FALSE(parse({"s.pov", "+D", "Display=off"}).display);
+  EXPECT_TRUE(parse({"s.pov", "+P"}).pause_when_done);
+  EXPECT_FALSE(parse({"s.pov", "+P", "-P"}).pause_when_done);
+  EXPECT_TRUE(parse({"s.pov", "--pause"}).pause_when_done);
+  EXPECT_TRUE(parse({"s.pov", "Pause_When_Done=true"}).pause_when_done);
+  EXPECT_NE(error_of({"s.pov", "Display=maybe"}).find("Display"), std::string::npos);
+}
+
 TEST(RenderOptions, BadArgumentsAreNamed) {
   EXPECT_NE(error_of({}).find("no scene file given"), std::string::npos);
   EXPECT_NE(error_of({"s.pov", "+W0"}).find("+W0"), std::string::npos);
