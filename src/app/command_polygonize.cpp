@@ -90,17 +90,6 @@ PreparedField prepare_mesh(const PolygonizeOptions& o) {
   return prepared;
 }
 
-double smallest_radius(const scene::ConvolutionObject& object) {
-  double r = std::numeric_limits<double>::infinity();
-  for (const auto& c : object.meshes) r = std::min(r, c.weight.radius);
-  for (const auto& c : object.segments) r = std::min(r, c.weight.radius);
-  for (const auto& c : object.arcs) r = std::min(r, c.weight.radius);
-  for (const auto& c : object.points) r = std::min(r, c.weight.radius);
-  for (const auto& c : object.blob_spheres) r = std::min(r, c.weight.radius);
-  for (const auto& c : object.blob_cylinders) r = std::min(r, c.weight.radius);
-  return r;
-}
-
 void place_surface(PreparedField& prepared, const scene::ConvolutionObject& object,
                    const scene::Transform& placed, const SourceLoc& loc) {
   std::shared_ptr<const implicit::Surface> surface;
@@ -258,6 +247,17 @@ void report(const Extraction& e, const mesh::MeshStats& topology, size_t shells_
 }
 
 }  // namespace
+
+double smallest_radius(const scene::ConvolutionObject& object) {
+  double r = std::numeric_limits<double>::infinity();
+  for (const auto& c : object.meshes) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.segments) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.arcs) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.points) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.blob_spheres) r = std::min(r, c.weight.radius);
+  for (const auto& c : object.blob_cylinders) r = std::min(r, c.weight.radius);
+  return r;
+}
 
 int run_polygonize(const PolygonizeOptions& o, std::ostream& out, std::ostream& err) {
   const auto start = std::chrono::steady_clock::now();

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/convolution_object.hpp"
+
 namespace convray::app {
 
 struct PolygonizeOptions {
@@ -33,5 +35,9 @@ struct PolygonizeOptions {
 // included (the message, with file:line:col where it applies, goes to `err`). Nothing is
 // written unless it succeeds.
 int run_polygonize(const PolygonizeOptions& options, std::ostream& out, std::ostream& err);
+
+// The components' smallest support radius (infinity when there are none): what sets the
+// default resolution of polygonize (the command's and the Python module's).
+double smallest_radius(const scene::ConvolutionObject& object);
 
 }  // namespace convray::app

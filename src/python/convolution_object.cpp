@@ -12,6 +12,7 @@
 #include <mutex>
 #include <optional>
 
+#include "app/command_polygonize.hpp"
 #include "app/size_check.hpp"
 #include "app/soup_triangles.hpp"
 #include "field/threshold.hpp"
@@ -34,17 +35,6 @@ namespace {
 
 scene::Weight weight_of(double radius, double strength) {
   return {finite(strength, "strength"), radius_checked(radius)};
-}
-
-// The components' smallest support radius: what sets polygonize's default resolution, as
-// `convray polygonize --object` sets it.
-double smallest_radius(const scene::ConvolutionObject& o) {
-  double r = std::numeric_limits<double>::infinity();
-  for (const auto& c : o.meshes) r = std::min(r, c.weight.radius);
-  for (const auto& c : o.segments) r = std::min(r, c.weight.radius);
-  for (const auto& c : o.arcs) r = std::min(r, c.weight.radius);
-  for (const auto& c : o.points) r = std::min(r, c.weight.radius);
-  return r;
 }
 
 // The one weight of the components an offset is measured from: triangles, else segments and
@@ -234,7 +224,7 @@ py::tuple ConvolutionObject::polygonize(std::optional<double> cell,
     double radius;
     {
       std::lock_guard lock(mutex_);
-      radius = smallest_radius(record_);
+      radius = app::smallest_radius(record_);
     }
     polygonize::FieldSource source;
     source.supports = s->support_boxes();
