@@ -140,10 +140,7 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
                                      ? static_cast<const GeometrySource*>(args->geometryUserPtr)
                                      : &(*line->sources)[instance];
   if (source->kind == GeometrySource::Kind::triangle) {
-    const BoundingBall ball = source->balls ? source->balls[args->primID]
-                                            : triangle_bounding_ball(source->triangles[args->primID],
-                                                                     source->radius(args->primID));
-    if (may_cross(line->origin, line->direction, ball)) {
+    if (may_cross(line->origin, line->direction, source->balls[args->primID])) {
       line->triangles->push_back({source, args->primID});
     }
     return;

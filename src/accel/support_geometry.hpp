@@ -26,7 +26,9 @@ struct GeometrySource {
   const field::Segment* capsules = nullptr;
   const field::Arc* arcs = nullptr;
   const field::Triangle* triangles = nullptr;
-  const BoundingBall* balls = nullptr;  // triangles: their supports' (SupportIndex makes them)
+  // Triangles: their supports' bounding balls, which the line callback tests. SupportIndex
+  // makes them for its own table, the one the callbacks read (inside instances too).
+  const BoundingBall* balls = nullptr;
   const double* radii = nullptr;  // per primitive, or null with `shared_radius`
   double shared_radius = 0.0;
   double margin = 0.0;  // absolute slack on the float boxes (see support_margin)
