@@ -208,11 +208,7 @@ double ConvolutionSurface::Impl::mean_support_width() const {
   for (size_t i = 0; i < arcs.size(); ++i) sum += arc_radii[i] + arcs[i].radius;
   for (const Group& g : groups) {
     for (uint32_t i = g.first_triangle; i < g.end_triangle; ++i) {
-      const field::Triangle& t = triangles[i];
-      const Vec3 centroid = (t.a + t.b + t.c) * (1.0 / 3.0);
-      sum += g.radius + std::sqrt(std::max({glm::dot(t.a - centroid, t.a - centroid),
-                                            glm::dot(t.b - centroid, t.b - centroid),
-                                            glm::dot(t.c - centroid, t.c - centroid)}));
+      sum += accel::triangle_bounding_ball(triangles[i], g.radius).radius;
     }
   }
   const size_t count = sphere_radii.size() + capsules.size() + arcs.size() + triangles.size();
