@@ -344,6 +344,13 @@ Guess quadratic_root(const Value& a, const Value& b, const Value& c) {
   return {a.t + s, p + 2.0 * d2 * s};
 }
 
+// A bound already weighed on a window: how far F may bend towards T over it, and whether it
+// is the window's own (not the quicker, larger one).
+struct Bend {
+  double value = std::numeric_limits<double>::quiet_NaN();
+  bool exact = false;
+};
+
 class Marcher {
  public:
   // `want_gradient`: the first root's gradient is wanted (the hit's normal); see root_gradient.
@@ -364,7 +371,7 @@ class Marcher {
   Value value(double t) { return {t, field_.value_minus_threshold(t)}; }
   bool bracket(const Value& a, const Value& b, const Value* third = nullptr);
   double polish_with_gradient(const Value& a, const Value& b, double t, double tolerance);
-  bool search_window(const Value& a, const Value& b);
+  bool search_window(const Value& a, const Value& b, Bend known = {});
   // How far F may bend away from its chord towards T over [a, b] (a on the side of `g`);
   // `quick`: a larger bound that costs less (ClusterField::curvature's `anywhere`), which
   // exists only below T (how far F bends down); above T it is the window's own bound.
@@ -372,7 +379,11 @@ class Marcher {
     return field_.curvature(a, b, !(g < 0.0), quick);
   }
   static bool has_quick_bound(double g) { return g < 0.0; }
-  double step_from(const Value& a, double to, double min_step, double max_step) const;
+  struct Step {
+    double length;
+    Bend bend;  // weighed over [a, a + length] (not for the shortest window)
+  };
+  Step step_from(const Value& a, double to, double min_step, double max_step) const;
 
   const Impl& s_;
   ClusterField& field_;
@@ -427,11 +438,17 @@ double Marcher::polish_with_gradient(const Value& a, const Value& b, double t, d
 
 // a and b on the same side of T: halve until the chord bound excludes a crossing pair, or
 // the window is narrower than the resolution.
-bool Marcher::search_window(const Value& a, const Value& b) {
+// `known`: a bound step_from weighed on this very window, tried before any other.
+bool Marcher::search_window(const Value& a, const Value& b, Bend known) {
   const auto excluded = [&](bool quick) {
     return chord_excluded(a, b, bend_towards_threshold(a.t, b.t, a.g, quick));
   };
-  if ((has_quick_bound(a.g) && excluded(true)) || excluded(false)) {
+  const bool weighed = known.value >= 0.0;
+  if (weighed && chord_excluded(a, b, known.value)) return false;
+  // A bound that failed is not weighed again: the window's own bound is the smaller one.
+  const bool try_quick = has_quick_bound(a.g) && !weighed;
+  const bool try_own = !(weighed && known.exact);
+  if ((try_quick && excluded(true)) || (try_own && excluded(false))) {
     return false;
   }
   if (b.t - a.t < kResolution * s_.min_radius) return false;
@@ -448,16 +465,29 @@ bool Marcher::search_window(const Value& a, const Value& b) {
 // The next window from a: the longest, doubling from min_step up to max_step, over which
 // the chord bound would exclude T if F came back to a's value at its end (the sum of each
 // primitive's bound over its whole line is tried first: it costs nothing per window).
-double Marcher::step_from(const Value& a, double to, double min_step, double max_step) const {
+// The bound that let the longest window through comes with it: search_window's first test
+// on the same window.
+Marcher::Step Marcher::step_from(const Value& a, double to, double min_step,
+                                 double max_step) const {
   const double gap = std::abs(a.g);
-  double best = min_step;
-  for (double window = min_step;; window = std::min(2.0 * window, max_step)) {
+  // The shortest window is taken whatever its bound says (search_window halves it if need
+  // be), so the doubling starts from there without weighing it.
+  Step best{min_step, {}};
+  if (min_step >= max_step || a.t + min_step >= to) return best;
+  // Both bounds only grow with the window: once the quick one fails, it fails for every
+  // longer window too.
+  bool quick_may_fit = has_quick_bound(a.g);
+  for (double window = std::min(2.0 * min_step, max_step);;
+       window = std::min(2.0 * window, max_step)) {
     const double end = std::min(to, a.t + window);
+    Bend bend;
     const auto fits = [&](bool quick) {
-      return bend_towards_threshold(a.t, end, a.g, quick) * window * window < 8.0 * gap;
+      bend = {bend_towards_threshold(a.t, end, a.g, quick), !quick};
+      return bend.value * window * window < 8.0 * gap;
     };
-    if (!(has_quick_bound(a.g) && fits(true)) && !fits(false)) return best;
-    best = window;
+    if (quick_may_fit && !fits(true)) quick_may_fit = false;
+    if (!quick_may_fit && !fits(false)) return best;
+    best = {window, bend};
     if (window >= max_step || end >= to) return best;
   }
 }
@@ -473,10 +503,11 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
   bool have_before = false;
   while (a.t < to) {
     ++stats_.fits;
-    const Value b = value(std::min(to, a.t + step_from(a, to, min_step, max_step)));
+    const Step step = step_from(a, to, min_step, max_step);
+    const Value b = value(std::min(to, a.t + step.length));
     if ((a.g < 0.0) != (b.g < 0.0)) {
       if (bracket(a, b, have_before ? &before : nullptr)) return true;
-    } else if (search_window(a, b)) {
+    } else if (search_window(a, b, step.bend)) {
       return true;
     }
     before = a;
