@@ -20,7 +20,7 @@ TriangleBatch::TriangleBatch(std::span<const Triangle> triangles) { assign(trian
 
 TriangleBatch::TriangleBatch(std::span<const Triangle> triangles, std::span<const double> weights) {
   assign(triangles);
-  for (size_t i = 0; i < weight_.size() && i < weights.size(); ++i) weight_[i] *= weights[i];
+  for (size_t i = 0; i < size_ && i < weights.size(); ++i) weight_[i] *= weights[i];
 }
 
 void TriangleBatch::assign(std::span<const Triangle> triangles) {
@@ -31,6 +31,7 @@ void TriangleBatch::assign(std::span<const Triangle> triangles) {
 // Every lane is then written whole by set_lane: no fill first (the batches of the window
 // march are reassigned for every ray, and filling 34 arrays was 2 % of a render).
 void TriangleBatch::resize(size_t n) {
+  size_ = n;
   for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->resize(n);
   for (EdgeArrays& e : edges_) {
     for (auto* v : {&e.vx, &e.vy, &e.vz, &e.ux, &e.uy, &e.uz, &e.mx, &e.my, &e.mz, &e.length}) {

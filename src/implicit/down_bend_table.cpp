@@ -4,12 +4,27 @@
 
 namespace convray::implicit {
 
+// The arrays only grow: resizing them down and up again for every cluster filled the new
+// rows with zeros each time.
 void DownBendTable::reset(size_t n) {
   size_ = 0;
+  live_from_ = 0;
+  live_at_ = -kInfinity;
+  if (n <= enter_.size()) return;
   for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &r2_, &measure_, &limit_,
                   &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_}) {
     v->resize(n);
   }
+}
+
+// The march's windows move forward: members at the front of the table whose support ended
+// before a add nothing to any later window either, and are skipped from then on (a window
+// that starts further back, as none does today, starts over from the first member).
+size_t DownBendTable::first_live(double a) const {
+  if (a < live_at_) live_from_ = 0;
+  live_at_ = a;
+  while (live_from_ < size_ && exit_[live_from_] < a) ++live_from_;
+  return live_from_;
 }
 
 void DownBendTable::add(double enter, double exit, const LineCurvature::DownTerms& t) {
@@ -39,10 +54,11 @@ size_t DownBendTable::entered_by(double b) const {
 
 double DownBendTable::sum(double a, double b, bool anywhere) const {
   const size_t n = entered_by(b);
+  const size_t first = std::min(first_live(a), n);
   const double* exit = exit_.data();
   double total = 0.0;
   if (anywhere) {
-    for (size_t k = 0; k < n; ++k) total += exit[k] < a ? 0.0 : anywhere_[k];
+    for (size_t k = first; k < n; ++k) total += exit[k] < a ? 0.0 : anywhere_[k];
     return total;
   }
   bend_.resize(std::max(bend_.size(), n));
@@ -54,13 +70,13 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
   const double *o00 = o00_.data(), *o01 = o01_.data(), *o10 = o10_.data(), *o11 = o11_.data();
   const double *o20 = o20_.data(), *o21 = o21_.data();
 #pragma omp simd
-  for (size_t k = 0; k < n; ++k) {
+  for (size_t k = first; k < n; ++k) {
     const double own = triangle_down_bend(weight[k], radius[k], r2[k], measure[k], limit[k],
                                           h0[k], h1[k], o00[k], o01[k], o10[k], o11[k], o20[k],
                                           o21[k], a, b);
     bend[k] = triangle[k] != 0.0 ? own : any[k];
   }
-  for (size_t k = 0; k < n; ++k) total += exit[k] < a ? 0.0 : bend[k];
+  for (size_t k = first; k < n; ++k) total += exit[k] < a ? 0.0 : bend[k];
   return total;
 }
 

@@ -30,8 +30,13 @@ class DownBendTable {
  private:
   // How many members enter at or before b (they are sorted by entry).
   size_t entered_by(double b) const;
+  // The first member whose support has not ended before a, given that the ones before it had
+  // ended before an earlier window's start (live_from_, live_at_).
+  size_t first_live(double a) const;
 
   size_t size_ = 0;
+  mutable size_t live_from_ = 0;
+  mutable double live_at_ = 0.0;
   std::vector<double> enter_, exit_, anywhere_;
   // The terms of triangle_down_bend; a member that is not a triangle has triangle_ 0 and
   // bends by its `anywhere_` on any window.
