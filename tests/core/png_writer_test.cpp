@@ -185,6 +185,22 @@ TEST_F(PngWriter, DisplayValuesDecodeAsOpenImageIOsEncoding) {
   EXPECT_TRUE(colour_chunks(path("ours.png")).empty());
 }
 
+// Runs of equal pixels and of equal channels (a background, a flat colour: the writer keeps a
+// channel's level for the next pixel) decode as OpenImageIO encodes every pixel on its own,
+// NaN, -0 and values one ulp apart among them.
+TEST_F(PngWriter, RunsOfEqualValuesDecodeAsOpenImageIOsEncoding) {
+  const std::vector<float> hard = hard_values();
+  std::vector<float> values;
+  for (size_t k = 0; k + 3 <= hard.size(); k += 3) {
+    for (int repeat = 0; repeat < 3; ++repeat) values.insert(values.end(), &hard[k], &hard[k] + 3);
+    // The same red, another green and blue: only the red channel's level is kept.
+    values.insert(values.end(), {hard[k], hard[(k + 7) % hard.size()], -0.0f});
+    values.insert(values.end(), {0.0f, std::nanf(""), hard[k + 2]});
+  }
+  const ImagePixels pixels{int(values.size() / 3), 1, values, PixelEncoding::linear};
+  expect_same_as_openimageio(path("ours.png"), path("theirs.png"), pixels);
+}
+
 // A picture big enough for several compressed data chunks, read back whole.
 TEST_F(PngWriter, ALargePictureIsCompleteAndReadsBack) {
   const int width = 640, height = 480;
