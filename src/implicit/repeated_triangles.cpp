@@ -63,6 +63,8 @@ std::optional<DistinctTriangles> merge_repeated(std::span<const field::Triangle>
   }
   if (!repeats) return std::nullopt;
   DistinctTriangles out;
+  out.triangles.reserve(n);  // no copies of a growing array (the dragon's 200k triangles)
+  out.multiplicity.reserve(n);
   std::vector<uint32_t> slot(n, UINT32_MAX);
   for (size_t i = 0; i < n; ++i) {
     if (first[i] == i) {
