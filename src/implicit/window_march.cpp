@@ -383,7 +383,8 @@ class Marcher {
     double length;
     Bend bend;  // weighed over [a, a + length] (not for the shortest window)
   };
-  Step step_from(const Value& a, double to, double min_step, double max_step) const;
+  Step step_from(const Value& a, double to, double min_step, double max_step,
+                 double slope) const;
 
   const Impl& s_;
   ClusterField& field_;
@@ -464,11 +465,14 @@ bool Marcher::search_window(const Value& a, const Value& b, Bend known) {
 
 // The next window from a: the longest, doubling from min_step up to max_step, over which
 // the chord bound would exclude T if F came back to a's value at its end (the sum of each
-// primitive's bound over its whole line is tried first: it costs nothing per window).
-// The bound that let the longest window through comes with it: search_window's first test
-// on the same window.
+// primitive's bound over its whole line is tried first: it costs nothing per window), or,
+// where F moves away from T (`slope`, the last window's chord, NaN for the first), if F ended
+// it where that chord points: a ray leaving a surface (every lit shadow ray) takes longer
+// windows as F falls. (Trusting the chord towards T as well, landing past the crossing it
+// predicts, cost 3-5 % more instructions: more windows were halved.) The bound that let the
+// longest window through comes with it: search_window's first test on the same window.
 Marcher::Step Marcher::step_from(const Value& a, double to, double min_step,
-                                 double max_step) const {
+                                 double max_step, double slope) const {
   const double gap = std::abs(a.g);
   // The shortest window is taken whatever its bound says (search_window halves it if need
   // be), so the doubling starts from there without weighing it.
@@ -483,7 +487,9 @@ Marcher::Step Marcher::step_from(const Value& a, double to, double min_step,
     Bend bend;
     const auto fits = [&](bool quick) {
       bend = {bend_towards_threshold(a.t, end, a.g, quick), !quick};
-      return bend.value * window * window < 8.0 * gap;
+      if (bend.value * window * window < 8.0 * gap) return true;
+      if (!(slope * a.g > 0.0)) return false;  // F moves away from T (on either side)
+      return chord_excluded(a, {end, a.g + slope * (end - a.t)}, bend.value);
     };
     if (quick_may_fit && !fits(true)) quick_may_fit = false;
     if (!quick_may_fit && !fits(false)) return best;
@@ -503,7 +509,9 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
   bool have_before = false;
   while (a.t < to) {
     ++stats_.fits;
-    const Step step = step_from(a, to, min_step, max_step);
+    const double slope = have_before ? (a.g - before.g) / (a.t - before.t)
+                                     : std::numeric_limits<double>::quiet_NaN();
+    const Step step = step_from(a, to, min_step, max_step, slope);
     const Value b = value(std::min(to, a.t + step.length));
     if ((a.g < 0.0) != (b.g < 0.0)) {
       if (bracket(a, b, have_before ? &before : nullptr)) return true;
