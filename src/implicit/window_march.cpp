@@ -489,7 +489,9 @@ Marcher::Step Marcher::step_from(const Value& a, double to, double min_step,
       bend = {bend_towards_threshold(a.t, end, a.g, quick), !quick};
       if (bend.value * window * window < 8.0 * gap) return true;
       if (!(slope * a.g > 0.0)) return false;  // F moves away from T (on either side)
-      return chord_excluded(a, {end, a.g + slope * (end - a.t)}, bend.value);
+      // A prediction, not a bound (the chord bound is checked on the real sample): F >= 0
+      // where strengths are positive, so it falls no further than g = -1.
+      return chord_excluded(a, {end, std::max(-1.0, a.g + slope * (end - a.t))}, bend.value);
     };
     if (quick_may_fit && !fits(true)) quick_may_fit = false;
     if (!quick_may_fit && !fits(false)) return best;
