@@ -437,12 +437,24 @@ double Marcher::polish_with_gradient(const Value& a, const Value& b, double t, d
                         std::numeric_limits<double>::quiet_NaN(), tolerance);
 }
 
-// a and b on the same side of T: halve until the chord bound excludes a crossing pair, or
-// the window is narrower than the resolution.
-// `known`: a bound step_from weighed on this very window, tried before any other.
+// Where to sample a window whose chord bound reaches T: where that bound comes closest to
+// T, kept within the window's middle half.
+double split_point(const Value& a, const Value& b, double bend) {
+  const double h = b.t - a.t;
+  if (!(bend > 0.0)) return a.t + 0.5 * h;
+  const double sign = a.g < 0.0 ? 1.0 : -1.0;
+  const double s = 0.5 * h + sign * (b.g - a.g) / (bend * h);
+  return a.t + std::clamp(s, 0.25 * h, 0.75 * h);
+}
+
+// a and b on the same side of T: split until the chord bound excludes a crossing pair, or
+// the window is narrower than the resolution. `known`: a bound step_from weighed on this very
+// window, tried before any other.
 bool Marcher::search_window(const Value& a, const Value& b, Bend known) {
+  double last_bend = known.value;  // the smallest bound weighed: where to sample next
   const auto excluded = [&](bool quick) {
-    return chord_excluded(a, b, bend_towards_threshold(a.t, b.t, a.g, quick));
+    last_bend = bend_towards_threshold(a.t, b.t, a.g, quick);
+    return chord_excluded(a, b, last_bend);
   };
   const bool weighed = known.value >= 0.0;
   if (weighed && chord_excluded(a, b, known.value)) return false;
@@ -454,7 +466,7 @@ bool Marcher::search_window(const Value& a, const Value& b, Bend known) {
   }
   if (b.t - a.t < kResolution * s_.min_radius) return false;
   ++stats_.subdivisions;
-  const Value mid = value(0.5 * (a.t + b.t));
+  const Value mid = value(split_point(a, b, last_bend));
   if ((mid.g < 0.0) != (a.g < 0.0)) {
     if (bracket(a, mid, &b)) return true;
     return bracket(mid, b, &a);
