@@ -37,6 +37,7 @@ using Event = display::ViewEvent;
 constexpr int kWatchMilliseconds = 50;
 constexpr int kEventMilliseconds = 15;
 constexpr std::chrono::seconds kMessageTime{4};
+constexpr std::chrono::milliseconds kCameraPatience{200};
 
 std::string default_output(const std::string& input) {
   return std::filesystem::path(input).stem().string() + "-view.png";
@@ -60,10 +61,11 @@ class ViewCommand {
   }
 
   void run() {
-    worker_.request(overrides_, true);
+    ask(true);
     Clock::time_point watched = Clock::now();
     while (!quit_) {
       for (const Event& e : window_.events(kEventMilliseconds)) handle(e);
+      send_camera();
       if (Clock::now() - watched > std::chrono::milliseconds(kWatchMilliseconds)) {
         watched = Clock::now();
         watch_files();
@@ -115,20 +117,38 @@ class ViewCommand {
     return s.frame ? s.frame->camera : ViewCamera{};
   }
 
+  // A drag sends dozens of moves a second: each waits until the last one's coarse picture is
+  // shown (or 0.2 s passed), so that the view follows the mouse in coarse pictures instead of
+  // starting over at every move and showing none.
   void move(const ViewCamera& camera) {
     if (!overrides_.camera && !worker_.state().frame) return;  // nothing to move yet
     overrides_.camera = camera;
-    worker_.request(overrides_, false);
+    camera_waits_ = true;
+  }
+
+  void send_camera() {
+    if (!camera_waits_) return;
+    const ViewWorker::State s = worker_.state();
+    const bool shown = s.request == asked_ && s.stage != ViewWorker::Stage::loading &&
+                       s.stage != ViewWorker::Stage::coarse;
+    if (!shown && Clock::now() - asked_at_ < kCameraPatience) return;
+    ask(false);
+  }
+
+  void ask(bool reparse) {
+    asked_ = worker_.request(overrides_, reparse);
+    asked_at_ = Clock::now();
+    camera_waits_ = false;  // what it waited for goes with this request
   }
 
   void reset_camera() {
     overrides_.camera.reset();
-    worker_.request(overrides_, true);
+    ask(true);
   }
 
   void set_clock(double clock) {
     overrides_.clock = clock;
-    worker_.request(overrides_, true);
+    ask(true);
     say("clock " + exact_number(clock));
   }
 
@@ -168,24 +188,26 @@ class ViewCommand {
     }
     const sdl::ConvolutionHeader edited = edited_header(*header, e.key);
     set_edit(overrides_.edits, edited);
-    worker_.request(overrides_, false);
+    ask(false);
     out_ << convolution_header_text(edited) << std::flush;
     say("radius " + exact_number(edited.radius) + "  offset " + exact_number(*edited.offset) +
-        "  (" + header->loc.str() + ")");
+            "  (" + header->loc.str() + ")",
+        true);
   }
 
   // A line over the picture for a few seconds: long enough to read, gone before it hides
-  // what the next look at the picture wants to see.
-  void say(const std::string& message) {
+  // what the next look at the picture wants to see; an edit's values stay until the next line.
+  void say(const std::string& message, bool stays = false) {
     message_ = message;
     said_ = Clock::now();
+    message_stays_ = stays;
   }
 
   void watch_files() {
     const ViewWorker::State s = worker_.state();
     if (s.files.empty()) return;
     watch_.watch(s.files);
-    if (watch_.changed()) worker_.request(overrides_, true);
+    if (watch_.changed()) ask(true);
   }
 
   // Reports each new error once on the terminal, and redraws what changed.
@@ -209,7 +231,9 @@ class ViewCommand {
 
   display::Overlay overlay_of(const ViewWorker::State& s) const {
     display::Overlay overlay;
-    if (!message_.empty() && Clock::now() - said_ < kMessageTime) overlay.lines.push_back(message_);
+    if (!message_.empty() && (message_stays_ || Clock::now() - said_ < kMessageTime)) {
+      overlay.lines.push_back(message_);
+    }
     if (overrides_.clock != 0.0 || o_.clock != 0.0) {
       overlay.lines.push_back("clock " + exact_number(overrides_.clock));
     }
@@ -225,7 +249,9 @@ class ViewCommand {
     switch (s.stage) {
       case ViewWorker::Stage::loading: return t + ", loading";
       case ViewWorker::Stage::coarse: return t + ", coarse";
-      case ViewWorker::Stage::full: return t + ", " + std::to_string(int(s.percent)) + "%";
+      case ViewWorker::Stage::full:  // the first pass's percentage, then --antialias's pass
+        if (s.percent >= 100) return t + ", anti-aliasing";
+        return t + ", " + std::to_string(int(s.percent)) + "%";
       case ViewWorker::Stage::done: return t + ", done";
       case ViewWorker::Stage::failed: return t + ", error";
     }
@@ -244,8 +270,10 @@ class ViewCommand {
   std::vector<uint8_t> levels_;
   display::Overlay shown_;
   std::string title_, reported_, message_;
-  Clock::time_point said_;
-  bool quit_ = false, help_ = false, redraw_ = false;
+  Clock::time_point said_, asked_at_;
+  uint64_t asked_ = 0;
+  bool camera_waits_ = false;
+  bool quit_ = false, help_ = false, redraw_ = false, message_stays_ = false;
 };
 
 }  // namespace

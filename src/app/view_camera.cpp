@@ -117,7 +117,8 @@ ViewCamera orbit(const ViewCamera& view, double yaw, double pitch) {
   if (glm::length(level) < 1e-12 * glm::length(offset)) {  // a scene looking along its sky
     level = glm::cross(sky, std::abs(sky.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1));
   }
-  offset = glm::length(offset) * (std::cos(wanted) * glm::normalize(level) + std::sin(wanted) * sky);
+  offset = glm::length(offset) *
+           (std::cos(wanted) * glm::normalize(level) + std::sin(wanted) * sky);
   v.location = v.look_at + offset;
   return v;
 }

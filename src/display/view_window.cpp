@@ -3,6 +3,7 @@
 #include <SDL.h>
 #include <SDL_ttf.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "display/sdl_setup.hpp"
@@ -110,7 +111,18 @@ void ViewWindow::show(const std::vector<uint8_t>& levels, const Overlay& overlay
   const int line = TTF_FontLineSkip(sdl_->font);
   int y = 4;
   for (const std::string& text : overlay.lines) draw_text(text, 6, y, false), y += line;
-  if (!overlay.error.empty()) draw_text(overlay.error, 6, size_.height - line - 4, true);
+  // The error wraps (monospace: a fixed number of characters a line), its last line at the
+  // bottom, so that a long path does not push the message out of the window; three lines at
+  // most, so that the picture stays in view (the terminal has all of it).
+  int advance = 8;
+  TTF_GlyphMetrics(sdl_->font, 'M', nullptr, nullptr, nullptr, nullptr, &advance);
+  const size_t columns = size_t(std::max(10, (size_.width - 12) / std::max(1, advance)));
+  const std::string& error = overlay.error;
+  const size_t rows = std::min<size_t>(3, (error.size() + columns - 1) / columns);
+  for (size_t r = 0; r < rows; ++r) {
+    const int at = size_.height - int(rows - r) * line - 4;
+    draw_text(error.substr(r * columns, columns), 6, at, true);
+  }
   SDL_RenderPresent(sdl_->renderer);
 }
 

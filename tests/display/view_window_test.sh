@@ -121,8 +121,8 @@ wait_title error
 sleep 0.3
 import -window "$id" error-screen.png
 grep -q "scene.pov:$errline:3: " view.err || fail "no scene.pov:$errline:3: on stderr: $(cat view.err)"
-convert error-screen.png -crop 160x90+0+0 +repage top-now.png
-convert edited.png -crop 160x90+0+0 +repage top-before.png
+convert error-screen.png -crop 160x60+0+0 +repage top-now.png
+convert edited.png -crop 160x60+0+0 +repage top-before.png
 [ "$(differing_pixels top-now.png top-before.png)" = 0 ] || fail "the last picture was not kept above the error"
 convert error-screen.png -crop 160x22+0+98 +repage band-now.png
 convert edited.png -crop 160x22+0+98 +repage band-before.png

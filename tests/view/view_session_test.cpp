@@ -255,7 +255,8 @@ TEST(ViewWorker, AParseErrorKeepsTheLastGoodPictureAndSaysWhere) {
   ViewSession session(o);
   display::PreviewImage image({0, 0, kW, kH}, {kW, kH});
   ViewWorker worker(session, image);
-  const ViewWorker::State good = wait_for(worker, worker.request({}, true), ViewWorker::Stage::done);
+  const ViewWorker::State good =
+      wait_for(worker, worker.request({}, true), ViewWorker::Stage::done);
   std::vector<uint8_t> before, after;
   image.take_if_changed(before);
   // The file render's bytes are what the window shows.
@@ -263,7 +264,8 @@ TEST(ViewWorker, AParseErrorKeepsTheLastGoodPictureAndSaysWhere) {
   EXPECT_EQ(*good.picture, file);
 
   write_text(scene, "sphere { <0, 0, 0>, 1\n  pigment { colour rgb 1 }\n  oops\n}\n");
-  const ViewWorker::State bad = wait_for(worker, worker.request({}, true), ViewWorker::Stage::failed);
+  const ViewWorker::State bad =
+      wait_for(worker, worker.request({}, true), ViewWorker::Stage::failed);
   ASSERT_TRUE(bad.error);
   EXPECT_EQ(bad.error->rfind(scene + ":3:3: ", 0), 0u) << *bad.error;
   EXPECT_EQ(bad.frame, good.frame);  // the last good scene stays
