@@ -159,7 +159,7 @@ class ViewCommand {
   }
 
   void save_picture() {
-    const ViewWorker::State s = worker_.state();
+    const ViewWorker::State s = state();
     if (s.stage != ViewWorker::Stage::done || !s.picture) {
       say("the full picture is not finished yet: s again when it is");
       return;
@@ -210,9 +210,17 @@ class ViewCommand {
     if (watch_.changed()) ask(true);
   }
 
+  // The worker's state, as loading until it has taken up the last request: a title that
+  // said `done` then would speak of the picture before the change.
+  ViewWorker::State state() const {
+    ViewWorker::State s = worker_.state();
+    if (s.request != asked_ || camera_waits_) s.stage = ViewWorker::Stage::loading;
+    return s;
+  }
+
   // Reports each new error once on the terminal, and redraws what changed.
   void refresh() {
-    const ViewWorker::State s = worker_.state();
+    const ViewWorker::State s = state();
     if (s.error_text != reported_) {
       if (!s.error_text.empty()) err_ << s.error_text << "\n" << std::flush;
       else if (!reported_.empty()) err_ << "convray view: " << o_.view.input << ": reloaded\n";

@@ -1,5 +1,7 @@
 #include "app/file_watch.hpp"
 
+#include <algorithm>
+
 namespace convray::app {
 
 FileWatch::Seen FileWatch::look(const std::string& file) {
@@ -15,9 +17,15 @@ FileWatch::Seen FileWatch::look(const std::string& file) {
 
 void FileWatch::watch(const std::vector<std::string>& files) {
   if (files == files_) return;  // the same list: its reference state stands
+  // A file watched before keeps its reference: a save that came after the parse that changed
+  // the list (an editor's truncation parsed, then its write) is still seen.
+  std::vector<Seen> seen;
+  for (const std::string& f : files) {
+    const auto known = std::find(files_.begin(), files_.end(), f);
+    seen.push_back(known != files_.end() ? seen_[size_t(known - files_.begin())] : look(f));
+  }
   files_ = files;
-  seen_.clear();
-  for (const std::string& f : files_) seen_.push_back(look(f));
+  seen_ = std::move(seen);
 }
 
 bool FileWatch::changed() {

@@ -11,7 +11,8 @@ namespace convray::app {
 
 class FileWatch {
  public:
-  // Watches `files` from now on (their state now is the reference).
+  // Watches `files` from now on: their state now is the reference, but for files watched
+  // already, which keep theirs.
   void watch(const std::vector<std::string>& files);
   // Whether a watched file changed since watch() or the last call that said so; the new
   // state becomes the reference.

@@ -23,7 +23,8 @@ struct ConvolutionHeader {
 
 struct ParseLog {
   // Every file resolved (includes, meshes, image maps, fonts, height fields, file_exists),
-  // in the order first read; the scene file itself is not listed.
+  // in the order first read, and where a file not found was looked for; the scene file
+  // itself is not listed.
   std::vector<std::string> files;
   // Each header read, once per location (a macro's object read twice is listed once).
   std::vector<ConvolutionHeader> convolutions;

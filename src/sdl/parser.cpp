@@ -132,6 +132,11 @@ std::string Parser::Impl::resolve(const std::string& name, const SourceLoc& at,
                  describe_file_kind(status) + ", not a file");
   }
   if (!must_exist) return {};
+  if (options.log) {  // where it would have been found: creating it there fixes the scene
+    for (const fs::path& folder : folders) {
+      options.log->note_file((folder.empty() ? given : folder / given).lexically_normal().string());
+    }
+  }
   std::string searched;
   for (const fs::path& folder : folders) {
     searched += searched.empty() ? "" : ", ";

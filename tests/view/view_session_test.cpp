@@ -233,6 +233,36 @@ TEST(ViewSession, WatchesTheSceneItsIncludesAndMeshes) {
   fs::remove_all(dir);
 }
 
+TEST(ViewSession, AMissingIncludeIsWatchedWhereItWasLookedFor) {
+  const fs::path dir = fs::temp_directory_path() / ("convray-view-m" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  write_text((dir / "scene.pov").string(), "#include \"later.inc\"\nsphere { 0, 1 }\n");
+  ViewOptions o = soup_options();
+  o.input = (dir / "scene.pov").string();
+  ViewSession session(o);
+  EXPECT_THROW(session.load({}), InputError);
+  FileWatch watch;
+  watch.watch(session.watched_files());
+  write_text((dir / "later.inc").string(), "light_source { <0, 5, -5> color rgb 1 }\n");
+  EXPECT_TRUE(watch.changed());
+  EXPECT_NO_THROW(session.load({}));
+  fs::remove_all(dir);
+}
+
+TEST(FileWatch, AFileWatchedBeforeKeepsItsReferenceWhenTheListChanges) {
+  const fs::path dir = fs::temp_directory_path() / ("convray-view-w" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string scene = (dir / "scene.pov").string(), mesh = (dir / "mesh.obj").string();
+  write_text(scene, "");  // an editor's save caught between truncation and write
+  write_text(mesh, "v 0 0 0\n");
+  FileWatch watch;
+  watch.watch({scene, mesh});
+  write_text(scene, "sphere { 0, 1 }\n");  // the write lands before the list is renewed
+  watch.watch({scene});                     // the empty scene's parse read no mesh
+  EXPECT_TRUE(watch.changed());
+  fs::remove_all(dir);
+}
+
 // Waits (up to a minute) until the worker has answered request `number` with `stage`.
 ViewWorker::State wait_for(const ViewWorker& worker, uint64_t number, ViewWorker::Stage stage) {
   for (int i = 0; i < 6000; ++i) {
