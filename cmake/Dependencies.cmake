@@ -9,6 +9,10 @@ find_package(embree 3 CONFIG REQUIRED)
 find_package(pegtl CONFIG REQUIRED)
 find_package(Freetype REQUIRED)
 find_package(SDL2 CONFIG REQUIRED)  # the +D preview window (src/display/)
+# convray view's text overlays (src/display/view_window.cpp): Debian's SDL2_ttf has no CMake
+# config, only its pkg-config file.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(SDL2_TTF REQUIRED IMPORTED_TARGET SDL2_ttf)
 
 # Debian's OpenImageIO config names /usr/include/opencv4 as an include directory, and CMake
 # refuses a missing one; we never use OpenCV, so drop it instead of installing libopencv-dev.

@@ -26,6 +26,7 @@ packages=(
   slurm-wlm munge  # a single-node Slurm for tests/slurm/render_farm_slurm_test.sh (docs/render-farm.md)
   pybind11-dev python3-dev python3-numpy python3-pytest  # import convray (docs/python.md)
   libsdl2-dev xvfb xdotool x11-utils imagemagick  # +D's window (src/display/); its tests on Xvfb (docs/view.md)
+  libsdl2-ttf-dev fonts-dejavu-core  # convray view's text overlays (src/display/view_window.cpp)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -18,6 +18,7 @@
 #include "app/command_polygonize.hpp"
 #include "app/command_quick.hpp"
 #include "app/command_step.hpp"
+#include "app/command_view.hpp"
 #include "app/command_render.hpp"
 #include "app/command_slice.hpp"
 #include "app/render_options.hpp"
@@ -38,6 +39,7 @@ constexpr const char* kDescription =
     "  echo '0 0 0' | convray field scenes/soup.pov --object Soup\n"
     "  convray slice scenes/models/soup.obj --radius 0.25 --offset 0.1 -o slice.png\n"
     "  convray quick scenes/models/soup.obj --radius 0.2 -o soup.png\n"
+    "  convray view scenes/soup.pov   (a window: edit, save, see; docs/view.md)\n"
     "  convray polygonize scenes/models/soup.obj --radius 0.25 --offset 0.1 -o soup_surface.obj\n"
     "  convray distance scenes/models/soup.obj soup_surface.obj\n";
 
@@ -187,7 +189,7 @@ void finish_quick_options(QuickArguments& q) {
 
 bool is_command(const std::string& word) {
   return word == "info" || word == "field" || word == "slice" || word == "quick" ||
-         word == "polygonize" || word == "distance";
+         word == "polygonize" || word == "distance" || word == "view";
 }
 
 // `convray SCENE.pov ...` and `convray +ISCENE.pov ...`: not a subcommand, so the render.
@@ -214,8 +216,8 @@ int render_main(const std::vector<std::string>& args) {
   const std::filesystem::path scene(options.scene);
   if (!scene.has_extension() && !std::filesystem::exists(scene)) {
     std::cerr << "convray: unknown command '" << options.scene
-              << "' (expected info, field, slice, quick, polygonize, distance or a scene "
-                 "file)\n"
+              << "' (expected info, field, slice, quick, polygonize, distance, view or a "
+                 "scene file)\n"
                  "Run 'convray --help' for usage.\n";
     return 2;
   }
@@ -284,6 +286,42 @@ CLI::App* add_distance_command(CLI::App& app, convray::app::DistanceOptions& d) 
                    "more samples catch narrower spikes")
       ->check(CLI::Range(size_t{1}, size_t{100000000}));
   return distance;
+}
+
+// `convray view`: the options straight into ViewCommandOptions, but the size (as quick's).
+struct ViewArguments {
+  convray::app::ViewCommandOptions options;
+  std::string size = "800x600";
+};
+
+CLI::App* add_view_command(CLI::App& app, ViewArguments& v) {
+  static const std::string description =
+      std::string(
+          "Show a scene (or a mesh, as 'quick' renders it) in a window and keep it live: a "
+          "coarse picture (one ray per 8x8 block) at once, then the full one; saving the scene, "
+          "an include or a mesh renders it again, and a parse error shows file:line:col in the "
+          "window and on standard error while the last good picture stays. Needs a display "
+          "(X11 or Wayland). docs/view.md.\nMouse and keys:\n") +
+      convray::app::kViewKeys +
+      "\nExample: convray view scenes/soup.pov --size 640x480";
+  CLI::App* view = app.add_subcommand("view", description);
+  view->add_option("INPUT", v.options.view.input,
+                   "scene file, or mesh file (.obj .ply .stl .off, optionally .gz)")
+      ->required();
+  view->add_option("--size", v.size, "picture size WIDTHxHEIGHT (default 800x600)");
+  view->add_option("--clock", v.options.clock, "the scene's clock (default 0); [ and ] move it")
+      ->check(kFinite);
+  view->add_option("--clock-step", v.options.clock_step, "what [ and ] add (default 0.05)")
+      ->check(kPositive);
+  view->add_flag("--antialias", v.options.view.antialias,
+                 "anti-alias the full picture (+A0.3; the coarse one never is)");
+  view->add_option("-L,--library", v.options.view.library_paths,
+                   "also search this folder for the scene's #include and mesh files");
+  view->add_option("--allow-read", v.options.view.read_folders,
+                   "also let the scene read files in this folder (POV-Ray's I/O restrictions)");
+  view->add_option("-o,--output", v.options.output,
+                   "where s writes the full picture (default: INPUT's name + -view.png)");
+  return view;
 }
 
 // Checks what CLI11 cannot: a scene with --object, or a mesh with --radius.
@@ -381,12 +419,20 @@ int main(int argc, char** argv) {
   convray::app::DistanceOptions distance_options;
   CLI::App* distance = add_distance_command(app, distance_options);
 
+  ViewArguments view_arguments;
+  CLI::App* view = add_view_command(app, view_arguments);
+
   try {
     app.parse(argc, argv);
     if (*slice && !parse_size(slice_size, slice_options.width, slice_options.height)) {
       throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 800x600, got " + slice_size);
     }
     if (*quick) finish_quick_options(quick_arguments);
+    if (*view && !parse_size(view_arguments.size, view_arguments.options.view.width,
+                             view_arguments.options.view.height)) {
+      throw CLI::ValidationError("--size", "expected WIDTHxHEIGHT, e.g. 800x600, got " +
+                                               view_arguments.size);
+    }
     if (*field) check_field_options(field_options, *field);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
@@ -405,8 +451,8 @@ int main(int argc, char** argv) {
     const bool unknown_command = argc > 1 && argv[1][0] != '-' && !is_command(argv[1]);
     std::cerr << "convray: "
               << (unknown_command ? "unknown command '" + std::string(argv[1]) +
-                                        "' (expected info, field, slice, quick, polygonize "
-                                        "or distance)"
+                                        "' (expected info, field, slice, quick, polygonize, "
+                                        "distance or view)"
                                   : std::string(e.what()))
               << "\nRun 'convray --help' for usage.\n";
     return 2;
@@ -420,5 +466,6 @@ int main(int argc, char** argv) {
   if (*field) return convray::app::run_field(field_options, std::cin, std::cout, std::cerr);
   if (*polygonize) return convray::app::run_polygonize(polygonize_options, std::cout, std::cerr);
   if (*distance) return convray::app::run_distance(distance_options, std::cout, std::cerr);
+  if (*view) return convray::app::run_view(view_arguments.options, std::cout, std::cerr);
   return 2;
 }

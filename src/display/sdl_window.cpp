@@ -1,5 +1,7 @@
 #include "display/sdl_window.hpp"
 
+#include "display/sdl_setup.hpp"
+
 #include <SDL.h>
 
 #include <algorithm>
@@ -28,41 +30,17 @@ namespace {
   throw NoDisplay(std::string(what) + ": " + SDL_GetError());
 }
 
-bool set(const char* variable) {
-  const char* value = std::getenv(variable);
-  return value && *value;
-}
-
-// Without a display server to ask for, SDL would try each of its drivers (seconds, and
-// libwayland's complaints on standard error) and settle on its offscreen one, which shows
-// nothing: a batch render is told at once instead. SDL_VIDEODRIVER, when set, is obeyed.
-// Otherwise only the servers named are tried: a DISPLAY whose server is gone fails with
-// X11's reason, not after a detour through Wayland that complains on standard error.
-void choose_a_driver() {
-  if (set("SDL_VIDEODRIVER")) return;
-  if (!set("DISPLAY") && !set("WAYLAND_DISPLAY")) {
-    throw NoDisplay("neither DISPLAY nor WAYLAND_DISPLAY is set");
-  }
-  const char* drivers = !set("WAYLAND_DISPLAY") ? "x11" : set("DISPLAY") ? "wayland,x11" : "wayland";
-  SDL_SetHint(SDL_HINT_VIDEODRIVER, drivers);
-}
-
 }  // namespace
 
 SdlWindow::SdlWindow(const std::string& title, PreviewSize size)
     : sdl_(std::make_unique<Handles>()), size_(size) {
-  // Ctrl-C must stay convray's: SDL would turn SIGINT and SIGTERM into a quit event, and the
-  // handler that removes unfinished files (util/partial_files) would never run.
-  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-  // A preview is no reason to keep the screen saver away.
-  SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
-  choose_a_driver();
+  prepare_sdl_video();
   if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
     const char* display = std::getenv("DISPLAY");
     fail(display ? ("DISPLAY=" + std::string(display)).c_str() : "SDL_Init");
   }
   sdl_->video = true;
-  if (unseen() && !set("SDL_VIDEODRIVER")) {
+  if (unseen() && !environment_set("SDL_VIDEODRIVER")) {
     throw NoDisplay("SDL found only its '" + driver() + "' driver, which shows nothing");
   }
   sdl_->window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,

@@ -52,6 +52,7 @@ void check_settings(const RenderSettings& s) {
     throw std::invalid_argument("render_scene: the image needs at least one pixel");
   }
   if (s.tile_size < 1) throw std::invalid_argument("render_scene: tile_size must be positive");
+  if (s.block_size < 1) throw std::invalid_argument("render_scene: block_size must be positive");
   if (s.antialias && (s.aa_depth < 1 || s.aa_depth > 9)) {
     throw std::invalid_argument("render_scene: the anti-aliasing depth must be 1 to 9");
   }
@@ -125,6 +126,33 @@ Vec3 supersampled_pixel(const Integrator& integrator, const SceneCamera& camera,
   return sum / double(positions.size() + 1);
 }
 
+// The pixel whose ray colours the block of `block` pixels that holds pixel i, along an axis
+// of `size` pixels: the block's middle one, or its last where the picture ends first.
+int block_sample(int i, int block, int size) {
+  const int first = i - i % block;
+  return std::min(first + block / 2, std::min(first + block, size) - 1);
+}
+
+// A quick look at `tile`: one ray per block (traced again in each tile a block straddles,
+// which gives the same colour: a pixel depends only on its own ray).
+void render_blocks(const Integrator& integrator, const SceneCamera& camera,
+                   const RenderSettings& settings, const PixelWindow& tile, Film& film,
+                   RenderStats& stats) {
+  const int b = settings.block_size;
+  for (int j0 = tile.y0; j0 < tile.y1; j0 = std::min(j0 - j0 % b + b, tile.y1)) {
+    const int j1 = std::min(j0 - j0 % b + b, tile.y1);
+    const int sj = block_sample(j0, b, settings.height);
+    for (int i0 = tile.x0; i0 < tile.x1; i0 = std::min(i0 - i0 % b + b, tile.x1)) {
+      const int i1 = std::min(i0 - i0 % b + b, tile.x1);
+      const int si = block_sample(i0, b, settings.width);
+      const Vec3 c = integrator.trace_camera_ray(camera.primary_ray(si, sj), stats);
+      for (int j = j0; j < j1; ++j) {
+        for (int i = i0; i < i1; ++i) film.set(i, j, c);
+      }
+    }
+  }
+}
+
 // The first pass: the centre of every pixel of `area`. Progress counts the window's pixels.
 void render_centres(const Integrator& integrator, const SceneCamera& camera,
                     const RenderSettings& settings, const PixelWindow& area, Progress* progress,
@@ -134,9 +162,14 @@ void render_centres(const Integrator& integrator, const SceneCamera& camera,
   const PixelWindow window = window_of(settings);
   for_each_tile(area, settings.tile_size, result.stats,
                 [&](const PixelWindow& tile, RenderStats& stats) {
-                  for (int j = tile.y0; j < tile.y1; ++j) {
-                    for (int i = tile.x0; i < tile.x1; ++i) {
-                      film.set(i, j, integrator.trace_camera_ray(camera.primary_ray(i, j), stats));
+                  if (settings.block_size > 1) {
+                    render_blocks(integrator, camera, settings, tile, film, stats);
+                  } else {
+                    for (int j = tile.y0; j < tile.y1; ++j) {
+                      for (int i = tile.x0; i < tile.x1; ++i) {
+                        film.set(i, j,
+                                 integrator.trace_camera_ray(camera.primary_ray(i, j), stats));
+                      }
                     }
                   }
                   if (progress) progress->advance(tile.intersection(window).pixels());
@@ -207,11 +240,12 @@ RenderResult render_scene(const scene::Scene& scene, const geometry::World& worl
   // Anti-aliasing compares each pixel with its four neighbours, so a window's first pass also
   // covers the ring around it: its pixels then get exactly the full render's decisions.
   const PixelWindow window = window_of(settings);
+  const bool antialiased = settings.antialias && settings.block_size == 1;
   const PixelWindow traced =
-      settings.antialias ? window.grown(1, settings.width, settings.height) : window;
+      antialiased ? window.grown(1, settings.width, settings.height) : window;
   render_centres(integrator, camera, settings, traced, progress, observer, scene.settings,
                  result);
-  if (settings.antialias) antialias(integrator, camera, settings, observer, scene.settings, result);
+  if (antialiased) antialias(integrator, camera, settings, observer, scene.settings, result);
   if (settings.window) clear_outside(window, result.film);
   finish_film(scene.settings, result.film);
   if (progress) progress->finish();

@@ -40,6 +40,11 @@ struct RenderSettings {
   // A partial render (POV-Ray's +SR/+ER/+SC/+EC): only these pixels are computed, every other
   // one stays black, as POV-Ray 3.7 writes them. Unset: the whole picture.
   std::optional<PixelWindow> window;
+  // A quick look (`convray view`'s first picture): above 1, one camera ray per block of
+  // block_size x block_size pixels (blocks from the picture's corner), through the centre of
+  // the block's middle pixel (or of its last pixel in a block the picture's edge cuts short),
+  // and that pixel's colour fills the block. Anti-aliasing is then not done.
+  int block_size = 1;
 };
 
 // Renders `scene` whose objects `world` holds (built from the same scene). `progress`, if

@@ -119,6 +119,9 @@ struct Implicit {
   std::vector<std::pair<Kind, size_t>> component_order;
   std::vector<ComponentTexture> component_textures;
   bool is_blob = false;  // written as `blob`: POV-Ray's inside rule F > T - 1e-6 applies
+  // Where its `convolution` keyword was (empty for blobs and quick's object): `convray view`
+  // finds the header of the object under the cursor by it (sdl/parse_log.hpp).
+  SourceLoc header_loc = {};
 };
 
 // One piece of a glyph's outline: the quadratic Bezier curve from `a` to `c` with control

@@ -32,6 +32,15 @@ struct Camera {
   Vec3 direction{0.0, 0.0, 1.0};
   Vec3 right{1.33, 0.0, 0.0};
   Vec3 up{0.0, 1.0, 0.0};
+  // The point the scene said to look_at and its sky, placed by the camera's transforms: not
+  // used to render (the vectors above are final), but `convray view` orbits around it.
+  std::optional<Vec3> look_at = std::nullopt;
+  Vec3 sky{0.0, 1.0, 0.0};
+  // The lengths of right, up and direction as the items gave them, before look_at turned
+  // them (a camera with look_at and no transforms; else 0): with location, look_at and sky
+  // they give this camera again, bit for bit, where the final vectors' lengths may be a
+  // rounding off.
+  Vec3 item_lengths{0.0};
 };
 
 struct AreaLight {

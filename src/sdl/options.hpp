@@ -15,6 +15,8 @@ namespace convray::sdl {
 class MeshLibrary;
 class ObjectQueries;
 class ImageReader;
+struct ParseLog;          // sdl/parse_log.hpp
+struct ConvolutionEdit;   // sdl/parse_log.hpp
 
 struct ParseOptions {
   int image_width = 800, image_height = 600;
@@ -58,6 +60,10 @@ struct ParseOptions {
   // image_map reads its picture through this (sdl/image_reader.hpp); without one, an
   // image_map is an error.
   std::shared_ptr<const ImageReader> image_reader;
+  // `convray view`: where the parse notes the files it read and the convolution headers, and
+  // the headers' radius and offset it replaces (sdl/parse_log.hpp). Null and empty: neither.
+  std::shared_ptr<ParseLog> log;
+  std::shared_ptr<const std::vector<ConvolutionEdit>> convolution_edits;
 };
 
 }  // namespace convray::sdl

@@ -54,6 +54,7 @@ CameraItems items_of(const scene::Camera& camera) {
   items.right = camera.right;
   items.up = camera.up;
   items.look_at = camera.location + camera.direction;
+  items.sky = camera.sky;
   items.has_right_or_up = true;  // its frame is final already
   return items;
 }
@@ -236,6 +237,8 @@ scene::Camera parse_camera(Parser& parser) {
   } else if (items.kind == scene::Camera::Kind::orthographic && !items.has_right_or_up) {
     spans_perspective_area(items);
   }
+  const Vec3 item_lengths(glm::length(items.right), glm::length(items.up),
+                          glm::length(items.direction));
   if (items.has_look_at) apply_look_at(parser, items);
   for (const Vec3* v : {&items.direction, &items.right, &items.up}) {
     if (*v == Vec3(0.0)) parser.fail(loc, "camera direction, right and up must not be 0");
@@ -247,6 +250,9 @@ scene::Camera parse_camera(Parser& parser) {
   camera.direction = items.transform.vector(items.direction);
   camera.right = items.transform.vector(items.right);
   camera.up = items.transform.vector(items.up);
+  if (items.has_look_at) camera.look_at = items.transform.point(items.look_at);
+  if (items.has_look_at && items.transform.is_identity()) camera.item_lengths = item_lengths;
+  camera.sky = items.transform.vector(items.sky);
   return camera;
 }
 

@@ -21,6 +21,7 @@
 #include "sdl/convolution_components.hpp"
 #include "sdl/item_parsers.hpp"
 #include "sdl/object_builder.hpp"
+#include "sdl/parse_log.hpp"
 
 namespace convray::sdl::items {
 
@@ -129,6 +130,27 @@ double resolve_threshold(Parser& parser, const SourceLoc& loc,
   return threshold;
 }
 
+// `convray view`'s live edit of this header, if any: its radius and offset replace what the
+// scene wrote (a threshold written gives way to the offset), as an edit of the text would.
+void apply_edit(Parser& parser, const SourceLoc& loc, ConvolutionSettings& settings) {
+  const auto& edits = parser.options().convolution_edits;
+  if (!edits) return;
+  for (const ConvolutionEdit& edit : *edits) {
+    if (!same_place(edit.loc, loc)) continue;
+    settings.defaults.radius = edit.radius;
+    settings.offset = edit.offset;
+    settings.threshold.reset();
+    settings.offset_loc = loc;
+  }
+}
+
+void note_header(Parser& parser, const SourceLoc& loc, const ConvolutionSettings& settings) {
+  if (!parser.options().log) return;
+  parser.options().log->note_convolution({loc, settings.defaults.radius,
+                                          settings.defaults.strength, settings.offset,
+                                          settings.threshold, settings.kernel});
+}
+
 }  // namespace
 
 scene::ObjectPtr parse_convolution(Parser& parser) {
@@ -163,7 +185,10 @@ scene::ObjectPtr parse_convolution(Parser& parser) {
       }
     }
   }
+  apply_edit(parser, loc, settings);
+  note_header(parser, loc, settings);
   auto& implicit = std::get<scene::Implicit>(builder.object().shape);
+  implicit.header_loc = loc;
   implicit.object.kernel = settings.kernel;
   implicit.object.threshold = resolve_threshold(parser, loc, settings);
   resolve_components(components, settings.defaults, implicit);

@@ -12,6 +12,7 @@
 #include "sdl/diagnostics.hpp"
 #include "sdl/items.hpp"
 #include "sdl/keywords.hpp"
+#include "sdl/parse_log.hpp"
 #include "sdl/parser_impl.hpp"
 #include "util/file_kind.hpp"
 #include "util/printable.hpp"
@@ -121,12 +122,21 @@ std::string Parser::Impl::resolve(const std::string& name, const SourceLoc& at,
                    allowed_folders_text() +
                    "; POV-Ray's I/O restrictions); convray --allow-read FOLDER widens them");
     }
-    if (fs::is_regular_file(status)) return candidate.lexically_normal().string();
+    if (fs::is_regular_file(status)) {
+      std::string found = candidate.lexically_normal().string();
+      if (options.log) options.log->note_file(found);
+      return found;
+    }
     if (!must_exist) return {};
     fail(at, "cannot read '" + name + "': " + candidate.string() + " is " +
                  describe_file_kind(status) + ", not a file");
   }
   if (!must_exist) return {};
+  if (options.log) {  // where it would have been found: creating it there fixes the scene
+    for (const fs::path& folder : folders) {
+      options.log->note_file((folder.empty() ? given : folder / given).lexically_normal().string());
+    }
+  }
   std::string searched;
   for (const fs::path& folder : folders) {
     searched += searched.empty() ? "" : ", ";

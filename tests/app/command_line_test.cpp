@@ -26,7 +26,7 @@ TEST_F(CommandLine, VersionExitsZero) {
 TEST_F(CommandLine, UnknownCommandIsNamed) {
   const testing::CliRun run = run_convray("render-everything");
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.err.find("unknown command 'render-everything' (expected info, field, slice, quick, polygonize, distance or a scene file)"),
+  EXPECT_NE(run.err.find("unknown command 'render-everything' (expected info, field, slice, quick, polygonize, distance, view or a scene file)"),
             std::string::npos)
       << run.err;
 }

@@ -5,6 +5,7 @@
 #   1. DISPLAY and WAYLAND_DISPLAY unset: "no display available", once, even for 3 frames;
 #   2. DISPLAY naming no server: the same, with X11's reason;
 #   3. SDL_VIDEODRIVER=dummy (asked for): the preview runs unseen, said once; +P returns.
+#   4. convray view, which needs a window, says so and exits 1 in each of these cases.
 #
 # usage: preview_headless_test.sh CONVRAY SOURCE_DIR
 set -uo pipefail
@@ -65,6 +66,23 @@ run dummy env -u DISPLAY -u WAYLAND_DISPLAY SDL_VIDEODRIVER=dummy "$convray" "$s
 cmp -s dummy.png dummy-plain.png || fail "dummy driver: the file differs from the -D render's"
 [ "$(lines_with dummy.err "shows no window")" = 1 ] ||
   fail "dummy driver: the unseen preview not said once: $(cat dummy.err)"
+
+# convray view cannot work without a window: it says so and exits 1, at once, for each way
+# of having none (and 2 for a scene that is not there).
+run view-none env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$convray" view "$scene"
+[ "$status" = 1 ] || fail "view, no display: exit status $status: $(cat view-none.err)"
+grep -q "convray view: no display available (neither DISPLAY nor WAYLAND_DISPLAY is set); view needs a window" view-none.err ||
+  fail "view, no display: $(cat view-none.err)"
+run view-gone env -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER DISPLAY=":$number" "$convray" view "$scene"
+[ "$status" = 1 ] || fail "view, no X server: exit status $status: $(cat view-gone.err)"
+grep -q "no display available (DISPLAY=:$number" view-gone.err || fail "view, no X server: $(cat view-gone.err)"
+run view-dummy env -u DISPLAY -u WAYLAND_DISPLAY SDL_VIDEODRIVER=dummy "$convray" view "$scene"
+[ "$status" = 1 ] || fail "view, dummy driver: exit status $status: $(cat view-dummy.err)"
+grep -q "shows no window (SDL_VIDEODRIVER); view needs one" view-dummy.err ||
+  fail "view, dummy driver: $(cat view-dummy.err)"
+run view-missing env -u DISPLAY "$convray" view no-such-scene.pov
+[ "$status" = 2 ] || fail "view, missing scene: exit status $status: $(cat view-missing.err)"
+grep -q "no-such-scene.pov: no such file" view-missing.err || fail "view, missing: $(cat view-missing.err)"
 
 if [ $failures -gt 0 ]; then
   echo "preview headless test: $failures failures"

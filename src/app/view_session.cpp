@@ -1,0 +1,217 @@
+#include "app/view_session.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "app/geometry_object_queries.hpp"
+#include "app/plugin_image_reader.hpp"
+#include "field/threshold.hpp"
+#include "mesh/load.hpp"
+#include "mesh/skeleton_stats.hpp"
+#include "mesh/stats.hpp"
+#include "render/function_sources.hpp"
+#include "render/render_scene.hpp"
+#include "render/scene_camera.hpp"
+#include "scene/quick_scene.hpp"
+#include "sdl/mesh_library.hpp"
+#include "sdl/parser.hpp"
+
+namespace convray::app {
+
+namespace {
+
+bool ends_with(const std::string& text, const std::string& end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+std::string quoted(const std::string& path) {
+  std::string q = "\"";
+  for (char c : path) q += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+  return q + "\"";
+}
+
+std::string vector_text(const Vec3& v) {
+  return "<" + exact_number(v.x) + ", " + exact_number(v.y) + ", " + exact_number(v.z) + ">";
+}
+
+// The `header_loc` of every convolution in `object`'s tree, in order.
+void convolution_locs(const scene::Object& object, std::vector<SourceLoc>& out) {
+  if (const auto* implicit = std::get_if<scene::Implicit>(&object.shape)) {
+    if (!implicit->header_loc.file.empty()) out.push_back(implicit->header_loc);
+  } else if (const auto* csg = std::get_if<scene::Csg>(&object.shape)) {
+    for (const scene::ObjectPtr& child : csg->children) convolution_locs(*child, out);
+  }
+}
+
+}  // namespace
+
+bool is_mesh_file(const std::string& path) {
+  std::string name = path;
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (ends_with(name, ".gz")) name.resize(name.size() - 3);
+  for (const char* e : {".obj", ".ply", ".stl", ".off"}) {
+    if (ends_with(name, e)) return true;
+  }
+  return false;
+}
+
+ViewSession::ViewSession(ViewOptions options)
+    : options_(std::move(options)), meshes_(std::make_shared<sdl::MeshLibrary>()) {}
+
+ViewSession::~ViewSession() = default;
+
+// What `quick` renders, as scene text: the mesh convolved at the radius `convray info`
+// advises, framed by the camera quick chooses, in quick's clay, under quick's light. As text,
+// its header can be edited and printed like a scene file's.
+std::string ViewSession::mesh_scene_text() const {
+  const mesh::LoadedMesh loaded = mesh::load_mesh(options_.input);
+  const double radius = mesh::advise_radius(mesh::compute_stats(loaded.soup),
+                                            mesh::compute_skeleton_stats(loaded)).radius;
+  Box3 bounds = loaded.bounds();
+  bounds.lo -= Vec3(radius);
+  bounds.hi += Vec3(radius);
+  const scene::LookAtView view =
+      scene::frame_bounds(bounds, options_.width, options_.height, 40.0);
+  const Vec3 light =
+      scene::default_light_position(scene::look_at_camera(view), bounds);
+  const std::string path = std::filesystem::absolute(options_.input).lexically_normal().string();
+  return "// convray view " + options_.input + ": the scene convray quick renders\n"
+         "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+         "camera {\n  perspective\n  location " + vector_text(view.location) +
+         "\n  look_at " + vector_text(view.look_at) + "\n  right x * image_width / image_height\n"
+         "  angle 40\n}\n"
+         "light_source { " + vector_text(light) + " color rgb 1 }\n"
+         "background { color rgb <0.015, 0.018, 0.025> }\n"
+         "convolution {\n  radius " + exact_number(radius) + "\n  mesh { " + quoted(path) + " }\n"
+         "  texture {\n    pigment { color rgb <0.8, 0.6, 0.42> }\n"
+         "    finish { ambient 0.08 diffuse 0.85 phong 0.3 phong_size 40 }\n  }\n}\n";
+}
+
+std::shared_ptr<const ViewFrame> ViewSession::load(const ViewOverrides& overrides) {
+  sdl::ParseOptions p;
+  p.mesh_library = meshes_;
+  p.image_width = options_.width;
+  p.image_height = options_.height;
+  p.clock = overrides.clock;
+  p.library_paths = options_.library_paths;
+  p.read_folders = options_.read_folders;
+  p.read_anywhere = options_.read_anywhere;
+  p.object_queries = geometry_object_queries();
+  p.image_reader = plugin_image_reader();
+  p.color_sources = render::renderer_color_sources();
+  auto log = std::make_shared<sdl::ParseLog>();
+  p.log = log;
+  p.convolution_edits = std::make_shared<const std::vector<sdl::ConvolutionEdit>>(overrides.edits);
+  sdl::ParseResult parsed;
+  try {
+    if (is_mesh_file(options_.input)) {
+      if (!mesh_scene_) mesh_scene_ = mesh_scene_text();
+      parsed = sdl::parse_string(*mesh_scene_, options_.input + ".pov", p);
+    } else {
+      parsed = sdl::parse_file(options_.input, p);
+    }
+  } catch (...) {
+    files_ = log->files;  // a broken include is watched too: saving it fixes the scene
+    throw;
+  }
+  files_ = log->files;
+  auto frame = std::make_shared<ViewFrame>();
+  frame->scene = std::move(parsed.scene);
+  if (overrides.camera) frame->scene.camera = camera_of(*overrides.camera);
+  frame->world = std::make_shared<const geometry::World>(frame->scene, &hierarchies_);
+  hierarchies_.next_frame();
+  frame->camera = overrides.camera.value_or(view_of(frame->scene.camera, frame->world->bounds()));
+  frame->convolutions = log->convolutions;
+  frame->warnings = std::move(parsed.warnings);
+  return frame;
+}
+
+std::shared_ptr<const ViewFrame> ViewSession::with_camera(const ViewFrame& frame,
+                                                          const ViewCamera& camera) {
+  auto moved = std::make_shared<ViewFrame>();
+  moved->scene = frame.scene;  // records shared, not copied
+  moved->scene.camera = camera_of(camera);
+  moved->world = frame.world;
+  moved->camera = camera;
+  moved->convolutions = frame.convolutions;
+  return moved;
+}
+
+std::vector<std::string> ViewSession::watched_files() const {
+  std::vector<std::string> files{options_.input};
+  for (const std::string& f : files_) {
+    if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+  }
+  return files;
+}
+
+render::RenderResult ViewSession::render(const ViewFrame& frame, int block,
+                                         render::RenderObserver* observer) const {
+  render::RenderSettings s;
+  s.width = options_.width;
+  s.height = options_.height;
+  s.block_size = block;
+  s.antialias = options_.antialias;
+  s.aa_threshold = options_.aa_threshold;
+  return render::render_scene(frame.scene, *frame.world, s, nullptr, observer);
+}
+
+std::optional<sdl::ConvolutionHeader> convolution_at(const ViewFrame& frame, int width,
+                                                     int height, int x, int y) {
+  if (x < 0 || y < 0 || x >= width || y >= height) return std::nullopt;
+  const render::SceneCamera camera(frame.scene.camera, width, height);
+  const Ray ray = camera.primary_ray(x, y);
+  if (ray.direction == Vec3(0.0)) return std::nullopt;
+  const double tmin = render::automatic_ray_offset(frame.scene, *frame.world);
+  TraceStats stats;
+  const auto seen = frame.world->first_hit(ray, tmin, kInfinity, stats,
+                                           geometry::World::Objects::all,
+                                           geometry::World::Viewer::camera);
+  if (!seen) return std::nullopt;
+  // The object met first among those with a convolution; picked if nothing is in front.
+  std::optional<SourceLoc> best;
+  double best_t = kInfinity;
+  for (const scene::ObjectPtr& object : frame.scene.objects) {
+    std::vector<SourceLoc> locs;
+    convolution_locs(*object, locs);
+    if (locs.empty()) continue;
+    std::vector<geometry::ShapePtr> shapes;
+    geometry::build_split_shapes(*object, shapes);
+    for (const geometry::ShapePtr& shape : shapes) {
+      const auto hit = shape->first_crossing(ray, tmin, best_t, stats);
+      if (hit && hit->t < best_t) best_t = hit->t, best = locs.front();
+    }
+  }
+  if (!best || best_t > seen->t + 1e-7 * (1.0 + std::abs(seen->t))) return std::nullopt;
+  for (const sdl::ConvolutionHeader& header : frame.convolutions) {
+    if (sdl::same_place(header.loc, *best)) return header;
+  }
+  return std::nullopt;
+}
+
+double header_offset(const sdl::ConvolutionHeader& h) {
+  if (h.offset) return *h.offset;
+  if (!h.threshold) return 0.5 * h.radius;
+  // The offset whose plane field is the threshold written: the field falls with the offset.
+  double lo = 0.0, hi = h.radius;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (field::plane_threshold(h.kernel, h.strength, h.radius, mid) > *h.threshold ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+std::string convolution_header_text(const sdl::ConvolutionHeader& h) {
+  std::string text = "convolution {  // " + h.loc.str() + "\n";
+  text += "  radius " + exact_number(h.radius) + "\n";
+  text += "  offset " + exact_number(header_offset(h)) + "\n";
+  if (h.strength != 1.0) text += "  strength " + exact_number(h.strength) + "\n";
+  if (h.kernel.type == field::KernelType::cauchy) {
+    text += "  kernel cauchy " + exact_number(h.kernel.sharpness) + "\n";
+  }
+  return text + "  // ... its components and modifiers, as in the scene\n";
+}
+
+}  // namespace convray::app
