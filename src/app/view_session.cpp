@@ -35,12 +35,23 @@ std::string vector_text(const Vec3& v) {
   return "<" + exact_number(v.x) + ", " + exact_number(v.y) + ", " + exact_number(v.z) + ">";
 }
 
-// The `header_loc` of every convolution in `object`'s tree, in order.
-void convolution_locs(const scene::Object& object, std::vector<SourceLoc>& out) {
+// Every convolution in `object`'s tree, alone and placed in the world as in the tree (its
+// own transform, then its CSG parents'), with the place of its header.
+struct PlacedConvolution {
+  scene::Object alone;
+  SourceLoc header;
+};
+void placed_convolutions(const scene::Object& object, const scene::Transform& above,
+                         std::vector<PlacedConvolution>& out) {
+  const scene::Transform placed = object.transform.then(above);
   if (const auto* implicit = std::get_if<scene::Implicit>(&object.shape)) {
-    if (!implicit->header_loc.file.empty()) out.push_back(implicit->header_loc);
+    if (implicit->header_loc.file.empty()) return;
+    scene::Object alone = object;
+    alone.transform = placed;
+    alone.inverse = false;
+    out.push_back({std::move(alone), implicit->header_loc});
   } else if (const auto* csg = std::get_if<scene::Csg>(&object.shape)) {
-    for (const scene::ObjectPtr& child : csg->children) convolution_locs(*child, out);
+    for (const scene::ObjectPtr& child : csg->children) placed_convolutions(*child, placed, out);
   }
 }
 
@@ -170,21 +181,29 @@ std::optional<sdl::ConvolutionHeader> convolution_at(const ViewFrame& frame, int
                                            geometry::World::Objects::all,
                                            geometry::World::Viewer::camera);
   if (!seen) return std::nullopt;
-  // The object met first among those with a convolution; picked if nothing is in front.
+  // The convolution whose own surface passes through the point seen: in a union, or carved
+  // by CSG, the visible surface at that depth is one member's (a member hidden behind another
+  // object, or cut away, has no crossing there).
+  const double near = 1e-7 * (1.0 + std::abs(seen->t));
   std::optional<SourceLoc> best;
-  double best_t = kInfinity;
+  double best_gap = near;
   for (const scene::ObjectPtr& object : frame.scene.objects) {
-    std::vector<SourceLoc> locs;
-    convolution_locs(*object, locs);
-    if (locs.empty()) continue;
-    std::vector<geometry::ShapePtr> shapes;
-    geometry::build_split_shapes(*object, shapes);
-    for (const geometry::ShapePtr& shape : shapes) {
-      const auto hit = shape->first_crossing(ray, tmin, best_t, stats);
-      if (hit && hit->t < best_t) best_t = hit->t, best = locs.front();
+    std::vector<PlacedConvolution> members;
+    placed_convolutions(*object, scene::Transform(), members);
+    for (const PlacedConvolution& member : members) {
+      std::vector<geometry::ShapePtr> shapes;
+      geometry::build_split_shapes(member.alone, shapes);
+      for (const geometry::ShapePtr& shape : shapes) {
+        std::vector<geometry::Crossing> crossings;
+        shape->crossings(ray, std::max(tmin, seen->t - near), seen->t + near, crossings, stats);
+        for (const geometry::Crossing& c : crossings) {
+          const double gap = std::abs(c.t - seen->t);
+          if (gap <= best_gap) best_gap = gap, best = member.header;
+        }
+      }
     }
   }
-  if (!best || best_t > seen->t + 1e-7 * (1.0 + std::abs(seen->t))) return std::nullopt;
+  if (!best) return std::nullopt;
   for (const sdl::ConvolutionHeader& header : frame.convolutions) {
     if (sdl::same_place(header.loc, *best)) return header;
   }

@@ -203,6 +203,39 @@ TEST(ViewSession, PicksTheConvolutionUnderThePixel) {
   EXPECT_FALSE(convolution_at(*frame, kW, kH, 1, kH - 2));  // the floor
 }
 
+// Members of one union (placed by the union's transform too), and a member carved by CSG:
+// each pixel picks the convolution whose own surface it shows.
+TEST(ViewSession, PicksTheMemberOfAUnionUnderThePixel) {
+  const fs::path dir = fs::temp_directory_path() / ("convray-pick-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::string text = read_text(kSoup);
+  const size_t begin = text.find("object { Soup");
+  text = text.substr(0, begin) +
+         "union {\n"
+         "  object { Soup translate -1.3 * x }\n"
+         "  difference {\n"
+         "    convolution { radius 0.45 offset 0.12 mesh { \"models/soup.obj\" } }\n"
+         "    box { <-2, -2, -2>, <2, 2, -0.5> }\n"
+         "    translate 1.3 * x\n"
+         "  }\n"
+         "  texture { Clay }\n"
+         "  translate 0.1 * y\n"
+         "}\n";
+  write_text((dir / "scene.pov").string(), text);
+  ViewOptions o = soup_options();
+  o.input = (dir / "scene.pov").string();
+  o.library_paths = {kScenes};
+  ViewSession session(o);
+  const auto frame = session.load({});
+  const auto left = convolution_at(*frame, kW, kH, kW / 2 - 16, kH / 2 + 2);
+  const auto right = convolution_at(*frame, kW, kH, kW / 2 + 16, kH / 2 + 2);
+  ASSERT_TRUE(left && right);
+  EXPECT_EQ(left->radius, 0.15);
+  EXPECT_EQ(right->radius, 0.45);  // the second member, inside a difference
+  EXPECT_FALSE(convolution_at(*frame, kW, kH, 1, 1));
+  fs::remove_all(dir);
+}
+
 TEST(ViewSession, WatchesTheSceneItsIncludesAndMeshes) {
   const fs::path dir = fs::temp_directory_path() / ("convray-view-" + std::to_string(::getpid()));
   fs::create_directories(dir);
