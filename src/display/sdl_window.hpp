@@ -13,6 +13,8 @@
 
 namespace convray::display {
 
+class PictureWindow;
+
 // SDL could not give us a window; what() is SDL's reason.
 class NoDisplay : public std::runtime_error {
  public:
@@ -48,9 +50,7 @@ class SdlWindow {
   WindowEvent wait(int milliseconds);
 
  private:
-  struct Handles;
-  std::unique_ptr<Handles> sdl_;
-  PreviewSize size_;
+  std::unique_ptr<PictureWindow> picture_;
 };
 
 }  // namespace convray::display

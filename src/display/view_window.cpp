@@ -6,33 +6,23 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "display/sdl_setup.hpp"
+#include "display/picture_window.hpp"
 
 namespace convray::display {
 
+// The font is closed (and SDL2_ttf left) before the window and SDL close.
 struct ViewWindow::Handles {
-  SDL_Window* window = nullptr;
-  SDL_Renderer* renderer = nullptr;
-  SDL_Texture* texture = nullptr;
+  std::unique_ptr<PictureWindow> picture;
   TTF_Font* font = nullptr;
-  bool video = false, ttf = false;
+  bool ttf = false;
 
   ~Handles() {
     if (font) TTF_CloseFont(font);
     if (ttf) TTF_Quit();
-    if (texture) SDL_DestroyTexture(texture);
-    if (renderer) SDL_DestroyRenderer(renderer);
-    if (window) SDL_DestroyWindow(window);
-    if (video) SDL_QuitSubSystem(SDL_INIT_VIDEO);
-    SDL_Quit();
   }
 };
 
 namespace {
-
-[[noreturn]] void fail(const std::string& what) {
-  throw NoDisplay(what + ": " + SDL_GetError());
-}
 
 // Text 13 pixels high: readable, and a dozen lines leave most of a 640 x 480 picture free.
 constexpr int kFontPoints = 13;
@@ -47,46 +37,21 @@ ViewWindow::ViewWindow(const std::string& title, PreviewSize size, const std::st
                  " is missing (apt-get install fonts-dejavu-core; bash scripts/setup.sh "
                  "installs it)");
   }
-  prepare_sdl_video();
-  if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
-    const char* display = std::getenv("DISPLAY");
-    fail(display ? "DISPLAY=" + std::string(display) : "SDL_Init");
-  }
-  sdl_->video = true;
+  sdl_->picture = std::make_unique<PictureWindow>(title, size);
   if (TTF_Init() != 0) throw NoFont(std::string("SDL2_ttf: ") + TTF_GetError());
   sdl_->ttf = true;
   sdl_->font = TTF_OpenFont(font.c_str(), kFontPoints);
   if (!sdl_->font) throw NoFont("cannot open the font " + font + ": " + TTF_GetError());
-  sdl_->window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
-                                  size.width, size.height, SDL_WINDOW_SHOWN);
-  if (!sdl_->window) fail("SDL_CreateWindow");
-  // The software renderer shows our bytes as they are (sdl_window.cpp says why).
-  sdl_->renderer = SDL_CreateRenderer(sdl_->window, -1, SDL_RENDERER_SOFTWARE);
-  if (!sdl_->renderer) fail("SDL_CreateRenderer");
-  sdl_->texture = SDL_CreateTexture(sdl_->renderer, SDL_PIXELFORMAT_RGB24,
-                                    SDL_TEXTUREACCESS_STREAMING, size.width, size.height);
-  if (!sdl_->texture) fail("SDL_CreateTexture");
-  SDL_SetRenderDrawBlendMode(sdl_->renderer, SDL_BLENDMODE_BLEND);
-  SDL_SetRenderDrawColor(sdl_->renderer, 0, 0, 0, 255);
-  SDL_RenderClear(sdl_->renderer);
-  SDL_RenderPresent(sdl_->renderer);
+  SDL_SetRenderDrawBlendMode(sdl_->picture->renderer(), SDL_BLENDMODE_BLEND);
 }
 
 ViewWindow::~ViewWindow() = default;
 
-std::string ViewWindow::driver() const {
-  const char* name = SDL_GetCurrentVideoDriver();
-  return name ? name : "";
-}
+std::string ViewWindow::driver() const { return sdl_->picture->driver(); }
 
-bool ViewWindow::unseen() const {
-  const std::string name = driver();
-  return name == "dummy" || name == "offscreen";
-}
+bool ViewWindow::unseen() const { return sdl_->picture->unseen(); }
 
-void ViewWindow::set_title(const std::string& title) {
-  SDL_SetWindowTitle(sdl_->window, title.c_str());
-}
+void ViewWindow::set_title(const std::string& title) { sdl_->picture->set_title(title); }
 
 // One line of text on a dark translucent band, so that it reads on any picture.
 void ViewWindow::draw_text(const std::string& text, int x, int y, bool error) {
@@ -94,20 +59,20 @@ void ViewWindow::draw_text(const std::string& text, int x, int y, bool error) {
   const SDL_Color colour = error ? SDL_Color{255, 110, 100, 255} : SDL_Color{235, 235, 235, 255};
   SDL_Surface* surface = TTF_RenderUTF8_Blended(sdl_->font, text.c_str(), colour);
   if (!surface) return;  // a line SDL2_ttf cannot set is left out, not fatal
-  SDL_Texture* texture = SDL_CreateTextureFromSurface(sdl_->renderer, surface);
+  SDL_Renderer* renderer = sdl_->picture->renderer();
+  SDL_Texture* texture = SDL_CreateTextureFromSurface(renderer, surface);
   const SDL_Rect band{x - 3, y, surface->w + 6, surface->h};
   const SDL_Rect at{x, y, surface->w, surface->h};
   SDL_FreeSurface(surface);
   if (!texture) return;
-  SDL_SetRenderDrawColor(sdl_->renderer, 0, 0, 0, 170);
-  SDL_RenderFillRect(sdl_->renderer, &band);
-  SDL_RenderCopy(sdl_->renderer, texture, nullptr, &at);
+  SDL_SetRenderDrawColor(renderer, 0, 0, 0, 170);
+  SDL_RenderFillRect(renderer, &band);
+  SDL_RenderCopy(renderer, texture, nullptr, &at);
   SDL_DestroyTexture(texture);
 }
 
 void ViewWindow::show(const std::vector<uint8_t>& levels, const Overlay& overlay) {
-  SDL_UpdateTexture(sdl_->texture, nullptr, levels.data(), 3 * size_.width);
-  SDL_RenderCopy(sdl_->renderer, sdl_->texture, nullptr, nullptr);
+  sdl_->picture->draw(levels);
   const int line = TTF_FontLineSkip(sdl_->font);
   int y = 4;
   for (const std::string& text : overlay.lines) draw_text(text, 6, y, false), y += line;
@@ -123,7 +88,7 @@ void ViewWindow::show(const std::vector<uint8_t>& levels, const Overlay& overlay
     const int at = size_.height - int(rows - r) * line - 4;
     draw_text(error.substr(r * columns, columns), 6, at, true);
   }
-  SDL_RenderPresent(sdl_->renderer);
+  sdl_->picture->present();
 }
 
 std::vector<ViewEvent> ViewWindow::events(int milliseconds) {

@@ -18,44 +18,11 @@ set -uo pipefail
 convray=$1
 source_dir=$2
 
-skip() {
-  echo "SKIPPED: view window test: $*"
-  exit 77
-}
-for tool in Xvfb xdotool xwininfo import compare convert; do
-  command -v "$tool" >/dev/null ||
-    skip "$tool is missing (apt-get install xvfb xdotool x11-utils imagemagick; bash scripts/setup.sh installs them)"
-done
+test_name="view window test"
+# shellcheck source=xvfb_session.sh
+source "$(dirname "${BASH_SOURCE[0]}")/xvfb_session.sh" 1280x1024
 [ -f /usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf ] ||
   skip "the overlay font is missing (apt-get install fonts-dejavu-core)"
-
-tmp=$(mktemp -d)
-xvfb_pid=""
-convray_pid=""
-cleanup() {
-  [ -n "$convray_pid" ] && kill "$convray_pid" 2>/dev/null && wait "$convray_pid" 2>/dev/null
-  [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null && wait "$xvfb_pid" 2>/dev/null
-  rm -rf "$tmp"
-}
-trap cleanup EXIT
-
-failures=0
-fail() {
-  echo "FAIL: $*"
-  failures=$((failures + 1))
-}
-
-Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$tmp/display" 2>"$tmp/xvfb.log" &
-xvfb_pid=$!
-for _ in $(seq 100); do
-  [ -s "$tmp/display" ] && break
-  kill -0 "$xvfb_pid" 2>/dev/null || skip "Xvfb did not start: $(tail -3 "$tmp/xvfb.log")"
-  sleep 0.1
-done
-[ -s "$tmp/display" ] || skip "Xvfb gave no display number in 10 s"
-export DISPLAY=":$(head -1 "$tmp/display")"
-unset WAYLAND_DISPLAY SDL_VIDEODRIVER
-cd "$tmp" || exit 1
 
 size=(+W160 +H120)
 library=(-L "$source_dir/scenes")
