@@ -35,9 +35,11 @@ wait_title() {
   return 1
 }
 
-# convray view on a copy of soup.pov (its mesh found through -L scenes).
+# convray view on a copy of soup.pov (its mesh found through -L scenes), named as a user in
+# that folder would name it, so that the overlays say soup.pov, not the temporary folder.
 cp scenes/soup.pov "$tmp/soup.pov"
-"$convray" view "$tmp/soup.pov" --size 480x360 --antialias -L scenes >/dev/null 2>&1 &
+(cd "$tmp" && exec "$convray" view soup.pov --size 480x360 --antialias -L "$OLDPWD/scenes") \
+  >/dev/null 2>&1 &
 convray_pid=$!
 id=$(timeout 20 xdotool search --sync --onlyvisible --name '^convray view: ' | head -1)
 wait_title ', done$'
