@@ -486,12 +486,13 @@ bool Marcher::search_window(const Value& a, const Value& b, Bend known) {
 Marcher::Step Marcher::step_from(const Value& a, double to, double min_step,
                                  double max_step, double slope) const {
   const double gap = std::abs(a.g);
-  // The shortest window is taken whatever its bound says (search_window halves it if need
+  // The shortest window is taken whatever its bound says (search_window splits it if need
   // be), so the doubling starts from there without weighing it.
   Step best{min_step, {}};
   if (min_step >= max_step || a.t + min_step >= to) return best;
-  // Both bounds only grow with the window: once the quick one fails, it fails for every
-  // longer window too.
+  // The quick bound only grows with the window: once it fails it is not asked again, the
+  // window's own bound is (a receding prediction might let a longer window pass it after
+  // all; the own bound, smaller, is then asked instead).
   bool quick_may_fit = has_quick_bound(a.g);
   for (double window = std::min(2.0 * min_step, max_step);;
        window = std::min(2.0 * window, max_step)) {
