@@ -18,10 +18,6 @@ Vec3 rotated(const Vec3& v, const Vec3& axis, double angle) {
   return v * c + glm::cross(axis, v) * s + axis * glm::dot(axis, v) * (1.0 - c);
 }
 
-std::string vector_text(const Vec3& v) {
-  return "<" + exact_number(v.x) + ", " + exact_number(v.y) + ", " + exact_number(v.z) + ">";
-}
-
 std::string kind_text(const ViewCamera& v) {
   switch (v.kind) {
     case Kind::perspective: return "perspective";
@@ -50,6 +46,10 @@ std::string exact_number(double value) {
   char text[32];
   const auto [end, error] = std::to_chars(text, text + sizeof text, value);
   return error == std::errc() ? std::string(text, end) : "0";
+}
+
+std::string vector_text(const Vec3& v) {
+  return "<" + exact_number(v.x) + ", " + exact_number(v.y) + ", " + exact_number(v.z) + ">";
 }
 
 ViewCamera view_of(const scene::Camera& camera, const Box3& bounds) {

@@ -45,5 +45,7 @@ ViewCamera pan(const ViewCamera& view, double dx, double dy);
 
 // The shortest decimal text that reads back as `value` ("0.1", "1e-05", "-3").
 std::string exact_number(double value);
+// <x, y, z> in exact_number's digits: a vector the scene language reads back bit for bit.
+std::string vector_text(const Vec3& v);
 
 }  // namespace convray::app

@@ -1,7 +1,6 @@
 #include "app/view_session.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include "app/geometry_object_queries.hpp"
@@ -21,18 +20,10 @@ namespace convray::app {
 
 namespace {
 
-bool ends_with(const std::string& text, const std::string& end) {
-  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
-}
-
 std::string quoted(const std::string& path) {
   std::string q = "\"";
   for (char c : path) q += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
   return q + "\"";
-}
-
-std::string vector_text(const Vec3& v) {
-  return "<" + exact_number(v.x) + ", " + exact_number(v.y) + ", " + exact_number(v.z) + ">";
 }
 
 // Every convolution in `object`'s tree, alone and placed in the world as in the tree (its
@@ -57,17 +48,6 @@ void placed_convolutions(const scene::Object& object, const scene::Transform& ab
 
 }  // namespace
 
-bool is_mesh_file(const std::string& path) {
-  std::string name = path;
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  if (ends_with(name, ".gz")) name.resize(name.size() - 3);
-  for (const char* e : {".obj", ".ply", ".stl", ".off"}) {
-    if (ends_with(name, e)) return true;
-  }
-  return false;
-}
-
 ViewSession::ViewSession(ViewOptions options)
     : options_(std::move(options)), meshes_(std::make_shared<sdl::MeshLibrary>()) {}
 
@@ -88,16 +68,20 @@ std::string ViewSession::mesh_scene_text() const {
   const Vec3 light =
       scene::default_light_position(scene::look_at_camera(view), bounds);
   const std::string path = std::filesystem::absolute(options_.input).lexically_normal().string();
+  const scene::Texture& clay = *scene::quick_texture();  // quick's own, written out
   return "// convray view " + options_.input + ": the scene convray quick renders\n"
          "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
          "camera {\n  perspective\n  location " + vector_text(view.location) +
          "\n  look_at " + vector_text(view.look_at) + "\n  right x * image_width / image_height\n"
          "  angle 40\n}\n"
          "light_source { " + vector_text(light) + " color rgb 1 }\n"
-         "background { color rgb <0.015, 0.018, 0.025> }\n"
+         "background { color rgb " + vector_text(scene::quick_background()) + " }\n"
          "convolution {\n  radius " + exact_number(radius) + "\n  mesh { " + quoted(path) + " }\n"
-         "  texture {\n    pigment { color rgb <0.8, 0.6, 0.42> }\n"
-         "    finish { ambient 0.08 diffuse 0.85 phong 0.3 phong_size 40 }\n  }\n}\n";
+         "  texture {\n    pigment { color rgb " + vector_text(clay.pigment.color.rgb) + " }\n"
+         "    finish { ambient " + vector_text(clay.finish.ambient) +
+         " diffuse " + exact_number(clay.finish.diffuse) +
+         " phong " + exact_number(clay.finish.phong) +
+         " phong_size " + exact_number(clay.finish.phong_size) + " }\n  }\n}\n";
 }
 
 std::shared_ptr<const ViewFrame> ViewSession::load(const ViewOverrides& overrides) {
@@ -117,7 +101,7 @@ std::shared_ptr<const ViewFrame> ViewSession::load(const ViewOverrides& override
   p.convolution_edits = std::make_shared<const std::vector<sdl::ConvolutionEdit>>(overrides.edits);
   sdl::ParseResult parsed;
   try {
-    if (is_mesh_file(options_.input)) {
+    if (mesh::is_mesh_file_name(options_.input)) {
       if (!mesh_scene_) mesh_scene_ = mesh_scene_text();
       parsed = sdl::parse_string(*mesh_scene_, options_.input + ".pov", p);
     } else {

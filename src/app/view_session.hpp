@@ -52,8 +52,6 @@ struct ViewFrame {
 // The block of the first, coarse picture.
 constexpr int kCoarseBlock = 8;
 
-bool is_mesh_file(const std::string& path);
-
 class ViewSession {
  public:
   explicit ViewSession(ViewOptions options);

@@ -56,4 +56,10 @@ const char* extension_of(MeshFormat format) {
   return "";
 }
 
+bool is_mesh_file_name(const std::string& name) {
+  std::string extension = lowercase_extension(name);
+  if (extension == ".gz") extension = lowercase_extension(name.substr(0, name.size() - 3));
+  return format_of_extension(extension).has_value();
+}
+
 }  // namespace convray::mesh

@@ -77,6 +77,10 @@ struct LoadedMesh {
 // Reads the mesh at `path`; the extension (case-insensitive) selects the format.
 LoadedMesh load_mesh(const std::string& path);
 
+// Whether load_mesh reads a file of this name (.obj .ply .stl .off, optionally .gz, in any
+// case): its extension only, the file is not opened.
+bool is_mesh_file_name(const std::string& name);
+
 // Reads a mesh from bytes already in memory. `name` selects the format by its extension,
 // exactly as a path would, and is the FILE of error messages.
 LoadedMesh load_mesh_from_memory(std::string_view bytes, const std::string& name);

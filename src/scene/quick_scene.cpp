@@ -11,9 +11,6 @@ namespace {
 
 double radians(double degrees) { return degrees * kPi / 180.0; }
 
-// A camera ray that misses everything: a dark blue-grey, so black shadows still read.
-constexpr Vec3 kBackground{0.015, 0.018, 0.025};
-
 }  // namespace
 
 LookAtView frame_bounds(const Box3& bounds, int width, int height, double angle_degrees) {
@@ -45,6 +42,8 @@ Vec3 default_light_position(const Camera& camera, const Box3& bounds) {
   return camera.location + reach * (-2.0 * right + 3.0 * up - 1.0 * forward);
 }
 
+Vec3 quick_background() { return Vec3(0.015, 0.018, 0.025); }
+
 TexturePtr quick_texture() {
   Texture texture;
   texture.pigment.color.rgb = Vec3(0.80, 0.60, 0.42);  // a warm clay
@@ -62,7 +61,7 @@ Scene quick_scene(scene::ConvolutionObject object, const Camera& camera,
   Light lamp;
   lamp.position = light;
   scene.lights.push_back(lamp);
-  scene.background = Color{kBackground};
+  scene.background = Color{quick_background()};
 
   auto record = std::make_shared<Object>();
   Implicit implicit;

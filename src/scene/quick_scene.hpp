@@ -21,6 +21,8 @@ Vec3 default_light_position(const Camera& camera, const Box3& bounds);
 
 // The finish of quick's pictures: ambient 0.08, diffuse 0.85, phong 0.3 with phong_size 40.
 TexturePtr quick_texture();
+// What a camera ray that misses everything shows: a dark blue-grey, so black shadows read.
+Vec3 quick_background();
 
 // The whole scene: `object` (in world space) seen by `camera`, lit by a white point light at
 // `light`, shadows on, assumed_gamma 1.

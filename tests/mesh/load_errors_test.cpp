@@ -217,6 +217,26 @@ TEST(LoadErrors, UnknownFormat) {
             "README: unknown mesh format: the name has no extension (expected .obj, .ply, .stl, .off, optionally .gz)");
 }
 
+// is_mesh_file_name says yes exactly where load_mesh picks a reader rather than refusing
+// the name as an unknown format.
+TEST(LoadErrors, IsMeshFileNameAgreesWithTheFormatLoadMeshPicks) {
+  for (const char* name : {"a.obj", "B.PLY", "c.stl", "d.Off", "bunny.ply.gz", "x/y.OBJ.GZ"}) {
+    EXPECT_TRUE(is_mesh_file_name(name)) << name;
+    EXPECT_EQ(input_error_of([&] { load_mesh(std::string("/nonexistent/") + name); })
+                  .find("unknown mesh format"),
+              std::string::npos)
+        << name;
+  }
+  for (const char* name : {"scene.pov", "points.xyz", "archive.tar.gz", "README", "dir.obj/file",
+                           ".gz", "model.gz"}) {
+    EXPECT_FALSE(is_mesh_file_name(name)) << name;
+    EXPECT_NE(input_error_of([&] { load_mesh(std::string("/nonexistent/") + name); })
+                  .find("unknown mesh format"),
+              std::string::npos)
+        << name;
+  }
+}
+
 TEST(LoadErrors, UnknownFormatIsReportedBeforeOpeningTheFile) {
   EXPECT_EQ(input_error_of([] { load_mesh("/nonexistent/model.3ds"); }),
             "/nonexistent/model.3ds: unknown mesh format '.3ds' (expected .obj, .ply, .stl, .off, optionally .gz)");

@@ -12,12 +12,16 @@
 
 #include <unistd.h>
 
+#include <OpenImageIO/imageio.h>
+
 #include "app/file_watch.hpp"
 #include "app/view_camera.hpp"
 #include "app/view_edits.hpp"
 #include "app/view_session.hpp"
 #include "app/view_worker.hpp"
 #include "app/geometry_object_queries.hpp"
+#include "core/image_file.hpp"
+#include "core/png_writer.hpp"
 #include "display/preview_image.hpp"
 #include "render/function_sources.hpp"
 #include "render/render_scene.hpp"
@@ -234,6 +238,36 @@ TEST(ViewSession, PicksTheMemberOfAUnionUnderThePixel) {
   EXPECT_EQ(right->radius, 0.45);  // the second member, inside a difference
   EXPECT_FALSE(convolution_at(*frame, kW, kH, 1, 1));
   fs::remove_all(dir);
+}
+
+// A mesh is shown as `convray quick` renders it (its radius, framing, light and clay): the
+// session's picture in the PNG writer's 8-bit levels against quick's file, read back by
+// OpenImageIO.
+TEST(ViewSession, AMeshLooksAsQuickRendersIt) {
+  const std::string mesh = kScenes + "/models/soup.obj";
+  const fs::path png = fs::temp_directory_path() / ("convray-quick-" + std::to_string(::getpid()) + ".png");
+  const std::string command = std::string(CONVRAY_BINARY) + " quick " + mesh + " --size " +
+                              std::to_string(kW) + "x" + std::to_string(kH) + " -o " +
+                              png.string() + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  auto in = OIIO::ImageInput::open(png.string());
+  ASSERT_TRUE(in);
+  std::vector<uint8_t> quick(size_t(kW) * kH * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, quick.data()));
+  in->close();
+  fs::remove(png);
+
+  ViewOptions o = soup_options();
+  o.input = mesh;
+  ViewSession session(o);
+  const std::vector<float> film = pixels(session.render(*session.load({}), 1));
+  ASSERT_EQ(film.size(), quick.size());
+  size_t off_by_more_than_one = 0;
+  for (size_t k = 0; k < film.size(); ++k) {
+    const int level = quantize_8bit(encode_srgb(film[k]));
+    off_by_more_than_one += std::abs(level - int(quick[k])) > 1;
+  }
+  EXPECT_EQ(off_by_more_than_one, 0u);
 }
 
 TEST(ViewSession, WatchesTheSceneItsIncludesAndMeshes) {
