@@ -46,7 +46,11 @@ class TriangleBatch {
   // Sum of the raw fields (strength 1) of all triangles, or of the listed ones.
   double value(const Vec3& p, double radius) const;
   FieldSample field(const Vec3& p, double radius) const;
-  double value(const Vec3& p, double radius, std::span<const uint32_t> subset) const;
+  // `try_wholly_inside` false: the caller knows the listed triangles are mostly clipped by
+  // the support sphere (the window march sums its wholly inside ones as quartics), so the
+  // cheap path for wholly inside chunks is not tried first.
+  double value(const Vec3& p, double radius, std::span<const uint32_t> subset,
+               bool try_wholly_inside = true) const;
   FieldSample field(const Vec3& p, double radius, std::span<const uint32_t> subset) const;
 
   // One value per triangle (out.size() == size()).
@@ -64,8 +68,8 @@ class TriangleBatch {
   struct Accumulator;
   void resize(size_t n);
   template <bool kGradient, class Index>
-  void evaluate(const Vec3& p, double radius, size_t count, Index index,
-                Accumulator& acc) const;
+  void evaluate(const Vec3& p, double radius, size_t count, Index index, Accumulator& acc,
+                bool try_wholly_inside = true) const;
   template <class Index>
   bool corners_within(const Vec3& p, double r2, size_t base, size_t lanes, Index index,
                       const detail::EdgeView* views) const;

@@ -253,7 +253,8 @@ field::FieldSample ClusterField::evaluate(double t) {
     if (b.lanes.empty()) continue;
     stats_.field_evaluations += b.lanes.size();
     if constexpr (kWant == Want::value) {
-      sum.value += strength * b.batch.value(p, radius, b.lanes);
+      // The listed lanes are clipped (those wholly inside are the quartics above).
+      sum.value += strength * b.batch.value(p, radius, b.lanes, false);
     } else {
       sum += b.batch.field(p, radius, b.lanes) * strength;
     }
