@@ -382,10 +382,10 @@ double TriangleBatch::value(const Vec3& p, double radius, std::span<const uint32
   return acc.value;
 }
 
-FieldSample TriangleBatch::field(const Vec3& p, double radius,
-                                 std::span<const uint32_t> subset) const {
+FieldSample TriangleBatch::field(const Vec3& p, double radius, std::span<const uint32_t> subset,
+                                 bool try_wholly_inside) const {
   Accumulator acc;
-  evaluate<true>(p, radius, subset.size(), Listed{subset.data()}, acc);
+  evaluate<true>(p, radius, subset.size(), Listed{subset.data()}, acc, try_wholly_inside);
   return {acc.value, acc.gradient};
 }
 

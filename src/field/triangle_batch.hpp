@@ -47,11 +47,12 @@ class TriangleBatch {
   double value(const Vec3& p, double radius) const;
   FieldSample field(const Vec3& p, double radius) const;
   // `try_wholly_inside` false: the caller knows the listed triangles are mostly clipped by
-  // the support sphere (the window march sums its wholly inside ones as quartics), so the
-  // cheap path for wholly inside chunks is not tried first.
+  // the support sphere (the window march lists its wholly inside ones apart), so the cheap
+  // path for wholly inside chunks is not tried first.
   double value(const Vec3& p, double radius, std::span<const uint32_t> subset,
                bool try_wholly_inside = true) const;
-  FieldSample field(const Vec3& p, double radius, std::span<const uint32_t> subset) const;
+  FieldSample field(const Vec3& p, double radius, std::span<const uint32_t> subset,
+                    bool try_wholly_inside = true) const;
 
   // One value per triangle (out.size() == size()).
   void values(const Vec3& p, double radius, std::span<double> out) const;

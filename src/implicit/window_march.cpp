@@ -74,7 +74,8 @@ class ClusterField {
     std::vector<uint8_t> has_quartic;               // first summed (many never are)
     field::TriangleBatch batch;
     std::vector<uint8_t> lane_set;  // batch lanes are set when first listed
-    std::vector<uint32_t> lanes;
+    std::vector<uint32_t> lanes;          // clipped by the support sphere at the sample
+    std::vector<uint32_t> inside_lanes;   // wholly inside it (a gradient's sample only)
   };
   template <Want kWant>
   field::FieldSample evaluate(double t);
@@ -228,10 +229,12 @@ field::FieldSample ClusterField::evaluate(double t) {
   for (size_t k = 0; k < batches_used_; ++k) {
     Batch& b = batches_[k];
     b.lanes.clear();
+    b.inside_lanes.clear();
     field::LineQuartic inside;
     for (uint32_t lane = 0; lane < b.enter.size(); ++lane) {
       if (!(b.enter[lane] <= t && t <= b.exit[lane])) continue;
-      if (kWant != Want::gradient && b.inside_enter[lane] <= t && t <= b.inside_exit[lane]) {
+      const bool wholly_inside = b.inside_enter[lane] <= t && t <= b.inside_exit[lane];
+      if (kWant == Want::value && wholly_inside) {
         if (!b.has_quartic[lane]) {
           b.quartics[lane] = field::triangle_line_quartic(s_.triangles[b.triangles[lane]],
                                                           ray_.at(origin_t_), ray_.direction,
@@ -239,24 +242,26 @@ field::FieldSample ClusterField::evaluate(double t) {
           b.has_quartic[lane] = 1;
         }
         inside.add(b.quartics[lane], 1.0);
-      } else {
-        if (!b.lane_set[lane]) {  // its first sample with the triangle clipped
-          const uint32_t triangle = b.triangles[lane];
-          b.batch.set_lane(lane, s_.triangles[triangle], s_.frames[triangle]);
-          b.lane_set[lane] = 1;
-        }
-        b.lanes.push_back(lane);
+        continue;
       }
+      if (!b.lane_set[lane]) {  // its first sample in the batch
+        const uint32_t triangle = b.triangles[lane];
+        b.batch.set_lane(lane, s_.triangles[triangle], s_.frames[triangle]);
+        b.lane_set[lane] = 1;
+      }
+      (wholly_inside ? b.inside_lanes : b.lanes).push_back(lane);
     }
     const double radius = b.group->radius, strength = b.group->strength;
     sum.value += strength * inside.value(s);
-    if (b.lanes.empty()) continue;
-    stats_.field_evaluations += b.lanes.size();
+    stats_.field_evaluations += b.lanes.size() + b.inside_lanes.size();
+    // The batch's cheap path for wholly inside triangles is tried only on the lanes known to
+    // be so: a chunk that mixes them with clipped ones takes the general path for all (the
+    // dragon's gradient samples at R = 5 cost 1.5 times the instructions that way).
     if constexpr (kWant == Want::value) {
-      // The listed lanes are clipped (those wholly inside are the quartics above).
-      sum.value += strength * b.batch.value(p, radius, b.lanes, false);
+      if (!b.lanes.empty()) sum.value += strength * b.batch.value(p, radius, b.lanes, false);
     } else {
-      sum += b.batch.field(p, radius, b.lanes) * strength;
+      if (!b.inside_lanes.empty()) sum += b.batch.field(p, radius, b.inside_lanes) * strength;
+      if (!b.lanes.empty()) sum += b.batch.field(p, radius, b.lanes, false) * strength;
     }
   }
   for (const Member& m : others_) {
