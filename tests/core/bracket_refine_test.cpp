@@ -117,7 +117,8 @@ TEST(BracketRefine, AGoodGuessWithItsSlopeConvergesInAFewEvaluations) {
 // Left open (`close_bracket` false, for a caller that evaluates the root itself): on a smooth
 // simple root the point returned is within the tolerance of the exact root, it was not
 // evaluated (the caller's evaluation replaces the one that closes the bracket), and the
-// refiner took one evaluation fewer than with the bracket closed.
+// refiner took at least one evaluation fewer than with the bracket closed (more where a
+// secant step shrank fast enough to land within the tolerance unchecked).
 TEST(BracketRefine, LeftOpenItReturnsItsLastStepUnevaluatedWithinTheTolerance) {
   for (const Case& c : cases()) {
     if (c.name == "triple root" || c.name == "jump" || c.name == "flat then steep") continue;
@@ -138,7 +139,7 @@ TEST(BracketRefine, LeftOpenItReturnsItsLastStepUnevaluatedWithinTheTolerance) {
       EXPECT_GE(open, c.lo) << what;
       EXPECT_LE(open, c.hi) << what;
       EXPECT_LE(open_evaluations, closed_evaluations) << what;
-      if (open != last_open) EXPECT_EQ(open_evaluations + 1, closed_evaluations) << what;
+      if (open != last_open) EXPECT_LE(open_evaluations + 1, closed_evaluations) << what;
     }
   }
 }
