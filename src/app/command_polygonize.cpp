@@ -10,9 +10,7 @@
 
 #include "app/command_step.hpp"
 #include "app/declared_object.hpp"
-#include "app/plugin_image_reader.hpp"
-#include "render/function_sources.hpp"
-#include "app/geometry_object_queries.hpp"
+#include "app/parse_hooks.hpp"
 #include "app/short_number.hpp"
 #include "app/size_check.hpp"
 #include "app/usage_error.hpp"
@@ -110,9 +108,7 @@ PreparedField prepare_scene(const PolygonizeOptions& o) {
   sdl::ParseOptions parse_options;
   parse_options.library_paths = o.library_paths;
   parse_options.read_folders = o.read_folders;
-  parse_options.object_queries = geometry_object_queries();
-  parse_options.image_reader = plugin_image_reader();
-  parse_options.color_sources = render::renderer_color_sources();
+  use_program_hooks(parse_options);
   const sdl::ParseResult parsed = sdl::parse_file(o.input, parse_options);
   const scene::Object& object = declared_implicit(parsed, o.input, o.object_name);
   const scene::ConvolutionObject& convolution = std::get<scene::Implicit>(object.shape).object;

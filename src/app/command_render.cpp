@@ -15,9 +15,7 @@
 
 #include "app/command_step.hpp"
 #include "app/frame_names.hpp"
-#include "app/plugin_image_reader.hpp"
-#include "render/function_sources.hpp"
-#include "app/geometry_object_queries.hpp"
+#include "app/parse_hooks.hpp"
 #include "app/size_check.hpp"
 #include "app/video.hpp"
 #include "display/preview.hpp"
@@ -62,9 +60,7 @@ sdl::ParseOptions scene_parse_options(const RenderOptions& o, const FrameClock& 
   if (p.write_folder.empty()) p.write_folder = ".";
   p.read_anywhere = o.read_anywhere;
   p.declares = o.declares;
-  p.object_queries = geometry_object_queries();
-  p.image_reader = plugin_image_reader();
-  p.color_sources = render::renderer_color_sources();
+  use_program_hooks(p);
   return p;
 }
 

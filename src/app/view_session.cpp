@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "app/geometry_object_queries.hpp"
-#include "app/plugin_image_reader.hpp"
+#include "app/parse_hooks.hpp"
 #include "field/threshold.hpp"
 #include "mesh/load.hpp"
 #include "mesh/skeleton_stats.hpp"
 #include "mesh/stats.hpp"
-#include "render/function_sources.hpp"
 #include "render/render_scene.hpp"
 #include "render/scene_camera.hpp"
 #include "scene/quick_scene.hpp"
@@ -93,9 +91,7 @@ std::shared_ptr<const ViewFrame> ViewSession::load(const ViewOverrides& override
   p.library_paths = options_.library_paths;
   p.read_folders = options_.read_folders;
   p.read_anywhere = options_.read_anywhere;
-  p.object_queries = geometry_object_queries();
-  p.image_reader = plugin_image_reader();
-  p.color_sources = render::renderer_color_sources();
+  use_program_hooks(p);
   auto log = std::make_shared<sdl::ParseLog>();
   p.log = log;
   p.convolution_edits = std::make_shared<const std::vector<sdl::ConvolutionEdit>>(overrides.edits);
