@@ -1,12 +1,26 @@
 #include "scene/mesh_skeleton.hpp"
 
+#include "core/spatial_order.hpp"
+
 namespace convray::scene {
 
+// The triangles in the spatial order of their centroids (core/spatial_order.hpp): a ray
+// meets triangles that lie near each other, and the convolution surface then finds them near
+// each other in memory (the dragon at R = 1 and R = 5: 3-8 % less time than in the file's
+// order, docs/benchmarks.md). The field is a sum, so the order changes nothing but rounding.
 MeshSkeleton skeleton_of(const mesh::LoadedMesh& mesh) {
   const std::vector<Vec3>& v = mesh.soup.vertices;
   MeshSkeleton skeleton;
+  std::vector<Vec3> centroids;
+  centroids.reserve(mesh.soup.size());
+  for (const mesh::Triangle& t : mesh.soup.triangles) {
+    centroids.push_back((v[t[0]] + v[t[1]] + v[t[2]]) * (1.0 / 3.0));
+  }
   skeleton.triangles.reserve(mesh.soup.size());
-  for (const mesh::Triangle& t : mesh.soup.triangles) skeleton.triangles.push_back({v[t[0]], v[t[1]], v[t[2]]});
+  for (const uint32_t i : spatial_order(centroids)) {
+    const mesh::Triangle& t = mesh.soup.triangles[i];
+    skeleton.triangles.push_back({v[t[0]], v[t[1]], v[t[2]]});
+  }
   skeleton.segments.reserve(mesh.segments.size());
   for (const mesh::Segment& s : mesh.segments) skeleton.segments.push_back({v[s[0]], v[s[1]]});
   skeleton.points.reserve(mesh.points.size());

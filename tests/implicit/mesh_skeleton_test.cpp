@@ -3,6 +3,10 @@
 // against the independent quadratures of tests/reference/.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <random>
+
 #include "implicit/convolution_surface.hpp"
 #include "scene/mesh_skeleton.hpp"
 #include "field/threshold.hpp"
@@ -59,6 +63,31 @@ TEST(MeshSkeleton, PositionsOfEveryKind) {
   ASSERT_EQ(skeleton.points.size(), 2u);
   EXPECT_EQ(skeleton.points[1], Vec3(0.5, 0, 3));
   EXPECT_EQ(skeleton.offset_from(), field::OffsetFrom::plane);
+}
+
+// The triangles come in a spatial order (core/spatial_order.hpp), not the file's: the same
+// triangles, each once, corners in the file's order.
+TEST(MeshSkeleton, TrianglesAreTheFilesInAnotherOrder) {
+  mesh::LoadedMesh file;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  for (int i = 0; i < 300; ++i) file.soup.vertices.push_back({u(rng), u(rng), u(rng)});
+  std::uniform_int_distribution<uint32_t> pick(0, 299);
+  for (int i = 0; i < 500; ++i) file.soup.triangles.push_back({pick(rng), pick(rng), pick(rng)});
+  const scene::MeshSkeleton skeleton = scene::skeleton_of(file);
+  auto key = [](const field::Triangle& t) {
+    return std::array<double, 9>{t.a.x, t.a.y, t.a.z, t.b.x, t.b.y, t.b.z, t.c.x, t.c.y, t.c.z};
+  };
+  std::vector<std::array<double, 9>> expected, got;
+  for (const auto& t : file.soup.triangles) {
+    const auto& v = file.soup.vertices;
+    expected.push_back(key({v[t[0]], v[t[1]], v[t[2]]}));
+  }
+  for (const field::Triangle& t : skeleton.triangles) got.push_back(key(t));
+  EXPECT_NE(got, expected);  // reordered (500 random triangles are not in Z-order)
+  std::sort(expected.begin(), expected.end());
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, expected);
 }
 
 TEST(MeshSkeleton, FieldIsTheSumOfTheReferenceFieldsOfEveryItem) {
