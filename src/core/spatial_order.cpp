@@ -37,7 +37,9 @@ std::vector<uint32_t> spatial_order(std::span<const Vec3> points) {
       key = 0;
       for (int axis = 0; axis < 3; ++axis) {
         const double span = extent[axis] > 0.0 ? extent[axis] : 1.0;
-        const double cell = std::clamp((p[axis] - bounds.lo[axis]) / span * kCells, 0.0, kCells);
+        // NaN (a range too wide for a double: inf / inf) and rounding past the ends clamp.
+        const double scaled = (p[axis] - bounds.lo[axis]) / span * kCells;
+        const double cell = scaled > 0.0 ? std::min(scaled, kCells) : 0.0;
         key |= spread(uint64_t(cell)) << axis;
       }
     }

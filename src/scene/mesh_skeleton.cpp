@@ -6,8 +6,8 @@ namespace convray::scene {
 
 // The triangles in the spatial order of their centroids (core/spatial_order.hpp): a ray
 // meets triangles that lie near each other, and the convolution surface then finds them near
-// each other in memory (the dragon at R = 1 and R = 5: 3-8 % less time than in the file's
-// order, docs/benchmarks.md). The field is a sum, so the order changes nothing but rounding.
+// each other in memory (the dragon at R = 5: a tenth less time than in the file's order; at
+// R = 1 about 1 %: docs/benchmarks.md). The field is a sum: the order changes its rounding.
 MeshSkeleton skeleton_of(const mesh::LoadedMesh& mesh) {
   const std::vector<Vec3>& v = mesh.soup.vertices;
   MeshSkeleton skeleton;

@@ -43,6 +43,9 @@ TEST(SpatialOrder, NonFinitePointsGoLastAndTiesKeepTheirOrder) {
   const std::vector<uint32_t> order = spatial_order(points);
   EXPECT_EQ(order, (std::vector<uint32_t>{2, 5, 0, 3, 1, 4}));
   EXPECT_TRUE(spatial_order(std::vector<Vec3>{}).empty());
+  // Finite points too far apart for their difference to be finite still get an order.
+  const std::vector<Vec3> wide{{1e308, 0, 0}, {-1e308, 0, 0}, {0, 0, 0}};
+  EXPECT_EQ(spatial_order(wide).size(), 3u);
   EXPECT_EQ(spatial_order(std::vector<Vec3>{{3, 3, 3}}), std::vector<uint32_t>{0});
 }
 
