@@ -67,7 +67,9 @@ constexpr size_t kChunk = 64;
 // (the three were 7.5 % of a render of the dragon at R = 1, a third of it scalar).
 constexpr size_t kAtanWidth = 4;
 static_assert(kChunk % kAtanWidth == 0);
-constexpr size_t simd_lanes(size_t lanes) { return (lanes + kAtanWidth - 1) / kAtanWidth * kAtanWidth; }
+constexpr size_t simd_lanes(size_t lanes) {
+  return (lanes + kAtanWidth - 1) / kAtanWidth * kAtanWidth;
+}
 
 // What phase 1 leaves for each lane of a chunk; phase 2 adds the pie-slice angles.
 struct ChunkState {
