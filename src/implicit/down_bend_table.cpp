@@ -12,7 +12,7 @@ void DownBendTable::reset(size_t n) {
   live_at_ = -kInfinity;
   if (n <= enter_.size()) return;
   for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &r2_, &measure_, &limit_,
-                  &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_}) {
+                  &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_}) {
     v->resize(n);
   }
 }
@@ -46,6 +46,8 @@ void DownBendTable::add(double enter, double exit, const LineCurvature::DownTerm
   o11_[k] = t.reach.outside[1][1];
   o20_[k] = t.reach.outside[2][0];
   o21_[k] = t.reach.outside[2][1];
+  lo_[k] = t.reach.along[0];
+  hi_[k] = t.reach.along[1];
 }
 
 size_t DownBendTable::entered_by(double b) const {
@@ -68,12 +70,12 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
   const double *measure = measure_.data(), *limit = limit_.data(), *triangle = triangle_.data();
   const double *h0 = h0_.data(), *h1 = h1_.data(), *any = anywhere_.data();
   const double *o00 = o00_.data(), *o01 = o01_.data(), *o10 = o10_.data(), *o11 = o11_.data();
-  const double *o20 = o20_.data(), *o21 = o21_.data();
+  const double *o20 = o20_.data(), *o21 = o21_.data(), *lo = lo_.data(), *hi = hi_.data();
 #pragma omp simd
   for (size_t k = first; k < n; ++k) {
     const double own = triangle_down_bend(weight[k], radius[k], r2[k], measure[k], limit[k],
                                           h0[k], h1[k], o00[k], o01[k], o10[k], o11[k], o20[k],
-                                          o21[k], a, b);
+                                          o21[k], lo[k], hi[k], a, b);
     bend[k] = triangle[k] != 0.0 ? own : any[k];
   }
   for (size_t k = first; k < n; ++k) total += exit[k] < a ? 0.0 : bend[k];

@@ -120,6 +120,11 @@ TriangleReach LineCurvature::reach_along(const field::Triangle& tri,
     reach.outside[k][0] = -glm::dot(inward, ray.origin - v);
     reach.outside[k][1] = -glm::dot(inward, ray.direction);
   }
+  const double along[3] = {glm::dot(tri.a - ray.origin, ray.direction),
+                           glm::dot(tri.b - ray.origin, ray.direction),
+                           glm::dot(tri.c - ray.origin, ray.direction)};
+  reach.along[0] = std::min(std::min(along[0], along[1]), along[2]);
+  reach.along[1] = std::max(std::max(along[0], along[1]), along[2]);
   return reach;
 }
 
@@ -142,7 +147,8 @@ double LineCurvature::bend_down(double a, double b) const {
   const auto& h = reach_.height;
   const auto& o = reach_.outside;
   return triangle_down_bend(weight_, radius_, r2_, measure_, limit_, h[0], h[1], o[0][0],
-                            o[0][1], o[1][0], o[1][1], o[2][0], o[2][1], a, b);
+                            o[0][1], o[1][0], o[1][1], o[2][0], o[2][1], reach_.along[0],
+                            reach_.along[1], a, b);
 }
 
 LineCurvature::DownTerms LineCurvature::down_terms() const {

@@ -16,6 +16,7 @@ namespace convray::implicit {
 struct TriangleReach {
   double height[2] = {0.0, 0.0};  // distance to the plane along the normal: h0 + h1 t
   double outside[3][2] = {};      // past edge k, in the plane: o0 + o1 t (<= 0: inside its line)
+  double along[2] = {0.0, 0.0};   // the range [lo, hi] of u.(q - origin) over its corners q
 };
 
 // A bound on the triangle's area (`measure`) within R of the window: within the ball of
@@ -55,15 +56,31 @@ inline double triangle_nearest_s(double r2, double h0, double h1, double o00, do
   return std::min(1.0, (h * h + e * e) / r2);
 }
 
-// How far a triangle's field (strength `weight` >= 0) may bend down over [a, b]:
-// u.H.u >= -4 (1 - s) / R^2 over its area within reach, at most `limit` (2 pi) in all.
+// A lower bound on |u.x| / R between a point p(t) of the window and a point q of the
+// triangle: u.x = t - u.(q - origin), whose range over the triangle is [lo, hi] (its corners'),
+// so |u.x| >= max(0, a - hi, lo - b).
+inline double triangle_nearest_along(double radius, double lo, double hi, double a, double b) {
+  return std::max(std::max(0.0, a - hi), lo - b) / radius;
+}
+
+// How far a triangle's field (strength `weight` >= 0) may bend down over [a, b]. Along a unit
+// u the kernel bends by u.H.u = 8 (u.x)^2 / R^4 - 4 (1 - s) / R^2, so it bends down only
+// where (1 - s) > 2 (u.x)^2 / R^2, by at most 4 / R^2 times (1 - s - 2 (u.x)^2 / R^2); as
+// s >= (u.x)^2 / R^2, that is also at most 1 - 3 (u.x)^2 / R^2. Over the triangle's area
+// within reach each factor is bounded by its value at the nearest possible point (s by the
+// height and the distance past an edge, u.x by the depth range along the line): no bend down
+// at all where every point of the triangle lies further than R / sqrt(3) along the line (a
+// ray approaching a surface), which the weight 4 (1 - s) / R^2 alone counted in full.
+// At most `limit` (2 pi) in all.
 inline double triangle_down_bend(double weight, double radius, double r2, double measure,
                                  double limit, double h0, double h1, double o00, double o01,
-                                 double o10, double o11, double o20, double o21, double a,
-                                 double b) {
+                                 double o10, double o11, double o20, double o21, double lo,
+                                 double hi, double a, double b) {
+  const double c = triangle_nearest_along(radius, lo, hi, a, b);
+  const double s = triangle_nearest_s(r2, h0, h1, o00, o01, o10, o11, o20, o21, a, b);
+  const double bends = std::max(0.0, 1.0 - std::max(s + 2.0 * c * c, 3.0 * c * c));
   const double within =
-      triangle_area_within(radius, measure, h0, h1, o00, o01, o10, o11, o20, o21, a, b) *
-      (1.0 - triangle_nearest_s(r2, h0, h1, o00, o01, o10, o11, o20, o21, a, b));
+      triangle_area_within(radius, measure, h0, h1, o00, o01, o10, o11, o20, o21, a, b) * bends;
   return weight * std::min(4.0 * within / r2, limit);
 }
 

@@ -164,6 +164,38 @@ TEST(LineCurvature, WideTriangleAgainstThePlanesClosedForm) {
   }
 }
 
+// The kernel bends down along u only where (1 - s) > 2 (u.x)^2 / R^2, which needs
+// |u.x| < R / sqrt(3): a ray approaching a wide triangle along its normal sees no downward
+// bend at all while every point of the window lies further than R / sqrt(3) from the plane
+// (the plane's F'' = -2 pi (1 - x)(1 - 5 x), x = h^2 / R^2, is positive beyond h = R / sqrt(5)),
+// and nearer it the bound still holds the closed form. The weight 4 (1 - s) / R^2 alone gave
+// 2 pi (1 - x)^2 there (0.89 pi at x = 1/3, where this bound is 0).
+TEST(LineCurvature, NoDownwardBendFurtherThanRootThreeOfRFromAWideTriangle) {
+  const double R = 0.2;
+  scene::ConvolutionObject object;
+  scene::MeshComponent mesh;
+  mesh.triangles.push_back({{-3, -3, 0}, {3, -3, 0}, {0, 3, 0}});
+  mesh.weight = {1.0, R};
+  object.meshes.push_back(mesh);
+  object.threshold = field::threshold_for_offset(1.0, R, 0.5 * R);
+  const ConvolutionSurface surface(object);
+  const ConvolutionSurface::Impl& s = surface.impl();
+  const uint32_t id = s.triangle_base;
+  const Ray normal{{0.1, -0.2, -R}, {0, 0, 1}};  // t = R + h, h the height above the plane
+  const double far = R / std::sqrt(3.0);
+  for (double h : {0.58 * R, 0.7 * R, 0.9 * R}) {
+    ASSERT_GT(h, far);
+    EXPECT_EQ(LineCurvature(s, id, normal).down(R + h, R + h + 0.05 * R), 0.0) << h / R;
+    EXPECT_EQ(LineCurvature(s, id, normal).down(R - h - 0.05 * R, R - h), 0.0) << h / R;
+  }
+  for (double x = 0.0; x <= 1.0; x += 1.0 / 64.0) {
+    const double h = R * std::sqrt(x), exact = -2.0 * kPi * (1.0 - x) * (1.0 - 5.0 * x);
+    const double down = LineCurvature(s, id, normal).down(R + h - 1e-6, R + h + 1e-6);
+    EXPECT_GE(exact, -down * (1.0 + 1e-9) - 1e-9) << "x = " << x;
+    if (x > 1.0 / 3.0 + 1e-3) EXPECT_EQ(down, 0.0) << "x = " << x;
+  }
+}
+
 }  // namespace
 }  // namespace convray::implicit
 
