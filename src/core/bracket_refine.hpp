@@ -55,7 +55,10 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
   const bool lo_negative = g_lo < 0.0;
   double t = guess > lo && guess < hi ? guess : (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
   double last_t = 0.0, last_g = 0.0;  // the previous point evaluated, for the secant
-  bool have_last = false;
+  // The one before it; before the second point, the end of the bracket nearer the first.
+  double older_t = std::abs(t - lo) < std::abs(hi - t) ? lo : hi;
+  double older_g = older_t == lo ? g_lo : g_hi;
+  bool have_last = false, have_older = false;
   double previous_step = hi - lo;
   int slow = 0;  // steps in a row that did not halve
   for (int iteration = 0; iteration < 200; ++iteration) {
@@ -76,7 +79,11 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
     }
     if (hi - lo <= resolution) break;
     double next = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);  // regula falsi of the bracket
-    if (have_last && value != last_g) {
+    if (have_older && value != last_g && value != older_g && last_g != older_g) {
+      next = t * last_g * older_g / ((value - last_g) * (value - older_g)) +
+             last_t * value * older_g / ((last_g - value) * (last_g - older_g)) +
+             older_t * value * last_g / ((older_g - value) * (older_g - last_g));
+    } else if (have_last && value != last_g) {
       next = t - value * (t - last_t) / (value - last_g);
     } else if (!have_last && guess_slope != 0.0 && std::isfinite(guess_slope)) {
       next = t - value / guess_slope;  // Newton from the guess, with its slope
@@ -98,6 +105,11 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
       slow = 0;
     }
     previous_step = std::abs(next - t);
+    if (have_last) {
+      older_t = last_t;
+      older_g = last_g;
+    }
+    have_older = true;
     last_t = t;
     last_g = value;
     have_last = true;
