@@ -375,6 +375,11 @@ class Marcher {
 
  private:
   Value value(double t) { return {t, field_.value_minus_threshold(t)}; }
+  // The same, where the march's step ends: at or past the cluster's end, where every
+  // support has ended, F = 0 < T without an evaluation (as at the cluster's entry).
+  Value sample_towards(double t) {
+    return t >= field_.reach() ? Value{t, -1.0} : value(t);
+  }
   bool bracket(const Value& a, const Value& b, const Value* third = nullptr);
   double polish_with_gradient(const Value& a, const Value& b, double t, double tolerance);
   bool search_window(const Value& a, const Value& b, Bend known = {});
@@ -534,7 +539,7 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
     const double slope = have_before ? (a.g - before.g) / (a.t - before.t)
                                      : std::numeric_limits<double>::quiet_NaN();
     const Step step = step_from(a, to, min_step, max_step, slope);
-    const Value b = value(std::min(to, a.t + step.length));
+    const Value b = sample_towards(std::min(to, a.t + step.length));
     if ((a.g < 0.0) != (b.g < 0.0)) {
       if (bracket(a, b, have_before ? &before : nullptr)) return true;
     } else if (search_window(a, b, step.bend)) {
