@@ -1,10 +1,12 @@
 #pragma once
 // The bracketed root refiners every layer shares (implicit's tracers, geometry's shapes,
-// polygonize's edge crossings): the safeguarded secant refiner and plain bisection to adjacent
+// polygonize's edge crossings): the safeguarded interpolating refiner and plain bisection to adjacent
 // doubles.
 //
 // refine_bracket: the safeguarded bracketed refiner of the ray tracers. On a sign-changing bracket
-// it steps by secants through the last two points evaluated (superlinear near a simple root),
+// it steps by inverse quadratic interpolation through the last three points evaluated (the
+// bracket's end nearer the first point standing in for the third at first; order 1.84 near a
+// simple root, against the secants' 1.62), by a secant where two of their values coincide,
 // falling back to regula falsi of the bracket for the first step and to bisection whenever a step
 // leaves the bracket or the steps stop shrinking; once a step is below the resolution, it lands
 // just past the root's side of the last point, so the bracket closes around the root. It stops when
@@ -28,7 +30,7 @@
 // points evaluated are the same as without it up to the stop, so it never costs evaluations;
 // 0 (the default) stops only on an exact zero, as the tracers want.
 //
-// `close_bracket` false: once a step falls below the resolution, or a secant step shrank so
+// `close_bracket` false: once a step falls below the resolution, or a step shrank so
 // fast that the point it lands on should lie well within the resolution (its error about
 // step^2 / previous step, kLandingFraction of the resolution at most), return that step's
 // point without evaluating it. For a caller that evaluates the root anyway, value and
@@ -54,7 +56,7 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
                       bool close_bracket = true) {
   const bool lo_negative = g_lo < 0.0;
   double t = guess > lo && guess < hi ? guess : (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-  double last_t = 0.0, last_g = 0.0;  // the previous point evaluated, for the secant
+  double last_t = 0.0, last_g = 0.0;  // the previous point evaluated, for the interpolation
   // The one before it; before the second point, the end of the bracket nearer the first.
   double older_t = std::abs(t - lo) < std::abs(hi - t) ? lo : hi;
   double older_g = older_t == lo ? g_lo : g_hi;
@@ -90,7 +92,7 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
     }
     const double step = std::abs(next - t);
     slow = step > 0.5 * previous_step ? slow + 1 : 0;
-    // Left open, a secant step that shrank fast enough is taken as landing within the
+    // Left open, a step that shrank fast enough is taken as landing within the
     // resolution: with superlinear convergence the next point's error is about
     // step * (step / previous_step) (see the comment at the top).
     const bool lands_within = !close_bracket && have_last && step < previous_step &&

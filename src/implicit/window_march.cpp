@@ -20,7 +20,7 @@ using Impl = ConvolutionSurface::Impl;
 constexpr double kResolution = 1e-3;
 // Roots are bracketed to this fraction of the smallest radius: the tests ask for 10^-6 of R
 // against the reference tracer, and a picture sees far less. (10^-9 moved normals by 10^-9,
-// which the reference tests notice; the last secant steps to a few ulps cost one or two exact
+// which the reference tests notice; the last steps to a few ulps cost one or two exact
 // evaluations of the cluster per root: 3 % of a render.)
 constexpr double kRootTolerance = 1e-10;
 // Windows are at least this fraction of the smallest radius (halved when their chord bound
