@@ -27,8 +27,8 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
 // the three edge capsules. Convex, so the union of their intervals is one interval.
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius);
-// A ball that holds the triangle's support: around its centroid, of radius the farthest
-// corner plus R.
+// A ball that holds the triangle's support: the smallest ball around the triangle (the
+// middle of its longest side for an obtuse one, else the circumcentre), grown by R.
 struct BoundingBall {
   Vec3 center;
   double radius;

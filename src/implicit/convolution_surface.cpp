@@ -198,7 +198,7 @@ double ConvolutionSurface::Impl::expected_supports_per_line() const {
 
 // Twice the mean of the supports' half-widths: each primitive's radius plus how far its
 // skeleton reaches from its middle (a point's nothing, a segment's half length, a triangle's
-// farthest corner from its centroid, an arc's circle radius).
+// smallest enclosing ball, an arc's circle radius).
 double ConvolutionSurface::Impl::mean_support_width() const {
   double sum = 0.0;
   for (double r : sphere_radii) sum += r;

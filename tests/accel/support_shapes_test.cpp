@@ -141,6 +141,43 @@ TEST(SupportShapes, BoundingBallKeepsEveryCrossingLine) {
   EXPECT_GT(rejected, 100);  // and it does reject lines
 }
 
+// The bounding ball is the smallest around the triangle, grown by R: it holds every corner
+// (to rounding), is never larger than the ball around the centroid, is half the longest side
+// around that side's middle for an obtuse triangle, and the circumradius (a^2 b^2 c^2 over 16
+// times the squared area, Heron's formula) for an acute one.
+TEST(SupportShapes, BoundingBallIsTheSmallestAroundTheTriangle) {
+  std::mt19937_64 rng(15);
+  int obtuse = 0, acute = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double r = 0.1;
+    const field::Triangle t{random_point(rng, 1), random_point(rng, 1),
+                            trial % 5 ? random_point(rng, 1) : random_point(rng, 1e-3)};
+    const BoundingBall ball = triangle_bounding_ball(t, r);
+    const double reach = ball.radius - r;
+    for (const Vec3& corner : {t.a, t.b, t.c}) {
+      EXPECT_LE(glm::length(corner - ball.center), reach * (1.0 + 1e-12)) << trial;
+    }
+    const Vec3 centroid = (t.a + t.b + t.c) / 3.0;
+    const double centroid_reach = std::max(
+        {glm::length(t.a - centroid), glm::length(t.b - centroid), glm::length(t.c - centroid)});
+    EXPECT_LE(reach, centroid_reach * (1.0 + 1e-12)) << trial;
+    const double a2 = glm::dot(t.b - t.c, t.b - t.c), b2 = glm::dot(t.c - t.a, t.c - t.a),
+                 c2 = glm::dot(t.a - t.b, t.a - t.b);
+    const double longest2 = std::max({a2, b2, c2});
+    if (2.0 * longest2 > a2 + b2 + c2 + 1e-9) {  // the longest side faces an obtuse angle
+      ++obtuse;
+      EXPECT_NEAR(reach, 0.5 * std::sqrt(longest2), 1e-12) << trial;
+    } else if (2.0 * longest2 < a2 + b2 + c2 - 1e-3) {  // clearly acute
+      ++acute;
+      const double area4 = glm::length(glm::cross(t.b - t.a, t.c - t.a)) * 2.0;  // 4 * area
+      const double circumradius = std::sqrt(a2 * b2 * c2) / area4;
+      EXPECT_NEAR(reach, circumradius, 1e-9 * circumradius) << trial;
+    }
+  }
+  EXPECT_GT(obtuse, 1000);
+  EXPECT_GT(acute, 1000);
+}
+
 TEST(SupportShapes, ArcSpanHoldsTheWholeCrossing) {
   std::mt19937_64 rng(14);
   for (int trial = 0; trial < 300; ++trial) {
