@@ -10,9 +10,11 @@ void DownBendTable::reset(size_t n) {
   size_ = 0;
   live_from_ = 0;
   live_at_ = -kInfinity;
+  entered_ = 0;
   if (n <= enter_.size()) return;
   for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &r2_, &measure_, &limit_,
-                  &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_}) {
+                  &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_,
+                  &bend_}) {
     v->resize(n);
   }
 }
@@ -50,8 +52,13 @@ void DownBendTable::add(double enter, double exit, const LineCurvature::DownTerm
   hi_[k] = t.reach.along[1];
 }
 
+// From the last answer, a step at a time: the march's windows end near where the last one
+// did (a binary search over the whole table cost more, on the short tables of most rays).
 size_t DownBendTable::entered_by(double b) const {
-  return size_t(std::upper_bound(enter_.begin(), enter_.begin() + size_, b) - enter_.begin());
+  entered_ = std::min(entered_, size_);
+  while (entered_ < size_ && enter_[entered_] <= b) ++entered_;
+  while (entered_ > 0 && enter_[entered_ - 1] > b) --entered_;
+  return entered_;
 }
 
 double DownBendTable::sum(double a, double b, bool anywhere) const {
@@ -63,8 +70,7 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
     for (size_t k = first; k < n; ++k) total += exit[k] < a ? 0.0 : anywhere_[k];
     return total;
   }
-  bend_.resize(std::max(bend_.size(), n));
-  double* bend = bend_.data();
+  double* bend = bend_.data();  // sized with the table by reset()
   // Named pointers: the vectorizer does not see through the members.
   const double *weight = weight_.data(), *radius = radius_.data(), *r2 = r2_.data();
   const double *measure = measure_.data(), *limit = limit_.data(), *triangle = triangle_.data();

@@ -36,6 +36,7 @@ class DownBendTable {
 
   size_t size_ = 0;
   mutable size_t live_from_ = 0;
+  mutable size_t entered_ = 0;  // entered_by's last answer
   mutable double live_at_ = 0.0;
   std::vector<double> enter_, exit_, anywhere_;
   // The terms of triangle_down_bend; a member that is not a triangle has triangle_ 0 and
