@@ -34,7 +34,16 @@ class TokenReader {
  public:
   explicit TokenReader(std::string_view line) : line_(line) {}
 
-  bool next(std::string_view& token);
+  // Inline: the ASCII PLY body calls it once per value.
+  bool next(std::string_view& token) {
+    while (offset_ < line_.size() && is_blank(line_[offset_])) ++offset_;
+    if (offset_ >= line_.size()) return false;
+    size_t end = offset_;
+    while (end < line_.size() && !is_blank(line_[end])) ++end;
+    token = line_.substr(offset_, end - offset_);
+    offset_ = end;
+    return true;
+  }
   // Everything after the tokens read so far, without leading blanks.
   std::string_view rest();
 
