@@ -6,25 +6,6 @@
 #include <cstdlib>
 
 namespace convray::mesh {
-namespace {
-
-// 1 to 18 decimal digits and nothing else, which cannot overflow 64 bits, summed directly:
-// a quarter of what std::from_chars spends on such a number (the indices of a large mesh).
-// False for everything else, which from_chars then decides.
-bool parse_short_digits(std::string_view token, uint64_t& value) {
-  if (token.empty() || token.size() > 18) return false;
-  uint64_t sum = 0;
-  for (char c : token) {
-    const unsigned digit = static_cast<unsigned char>(c) - unsigned{'0'};
-    if (digit > 9) return false;
-    sum = sum * 10 + digit;
-  }
-  value = sum;
-  return true;
-}
-
-}  // namespace
-
 bool LineReader::next(std::string_view& line) {
   if (offset_ >= text_.size()) return false;
   size_t end = offset_;
@@ -70,7 +51,7 @@ bool parse_real(std::string_view token, double& value) {
   return ec == std::errc() && ptr == end;
 }
 
-bool parse_integer(std::string_view token, int64_t& value) {
+bool parse_any_integer(std::string_view token, int64_t& value) {
   const bool had_plus = !token.empty() && token.front() == '+';
   if (had_plus) token.remove_prefix(1);
   if (token.empty() || token.front() == '+' || (had_plus && token.front() == '-')) return false;
