@@ -33,6 +33,7 @@ struct ElementPlan {
   std::vector<Use> uses;  // one per property
   bool is_vertex = false;
   bool is_edge = false;
+  bool is_face = false;
   bool skipped = true;    // no property is read
 
   // Bytes per instance when no property is a list; 0 otherwise.
@@ -57,6 +58,7 @@ class Planner {
     else if (element.name == "face") plan_indices(plan, Use::face);
     else if (element.name == "tristrips") plan_indices(plan, Use::strip);
     else if (element.name == "edge") plan_edge(plan);
+    plan.is_face = element.name == "face";
     plan.skipped = std::all_of(plan.uses.begin(), plan.uses.end(), [](Use use) { return use == Use::skip; });
     return plan;
   }
@@ -125,8 +127,11 @@ class ElementWalk {
       if (size > 0 && plan.skipped) return body_.skip_fixed(element, size);
       if (size > 0 && element.count > body_.remaining() / size) body_.skip_fixed(element, size);  // fails
     }
-    // Text needs at least two bytes ("0\n") per instance, binary one.
-    if (plan.is_vertex) mesh_.vertices.reserve(std::min<uint64_t>(element.count, body_.remaining() / 2 + 1));
+    // Text needs at least two bytes ("0\n") per instance, binary one: a header that claims
+    // more instances than the bytes can hold reserves no more than they can.
+    const uint64_t at_most = std::min<uint64_t>(element.count, body_.remaining() / 2 + 1);
+    if (plan.is_vertex) mesh_.vertices.reserve(at_most);
+    if (plan.is_face) reserve_faces(at_most);
     for (uint64_t i = 0; i < element.count; ++i) read_instance(plan, i);
   }
 
@@ -153,6 +158,14 @@ class ElementWalk {
     body_.end();
     if (plan.is_vertex) add_vertex(position, i);
     if (plan.is_edge) mesh_.lines.add(edge);
+  }
+
+  // Room for `faces` triangles more (and their growth, should they be polygons); growing
+  // the lists of a large mesh a doubling at a time copied each index about twice.
+  void reserve_faces(uint64_t faces) {
+    IndexLists& lists = mesh_.faces;
+    lists.ends.reserve(lists.ends.size() + faces);
+    lists.items.reserve(lists.items.size() + std::min<uint64_t>(3 * faces, body_.remaining() / 2 + 1));
   }
 
   void skip(const PlyProperty& property) {
