@@ -60,19 +60,27 @@ std::string_view trim_blanks(std::string_view line);
 // be the number. Everything this accepts, assimp's fast_atoreal_move reads without throwing.
 bool parse_real(std::string_view token, double& value);
 
-// 1 to 18 decimal digits and nothing else, which cannot overflow 64 bits, summed directly:
-// a quarter of what std::from_chars spends on such a number (the indices of a large mesh).
-// False for everything else.
-inline bool parse_short_digits(std::string_view token, uint64_t& value) {
-  if (token.empty() || token.size() > 18) return false;
+// The run of decimal digits that starts at `at` and ends before `end` or the first other
+// byte, if it has 1 to 18 digits (which cannot overflow 64 bits): its value, summed directly
+// (a quarter of what std::from_chars spends on such a number, such as the indices of a large
+// mesh), and the byte after it. nullptr for no digit or more than 18.
+inline const char* scan_short_digits(const char* at, const char* end, uint64_t& value) {
+  const char* const first = at;
   uint64_t sum = 0;
-  for (char c : token) {
-    const unsigned digit = static_cast<unsigned char>(c) - unsigned{'0'};
-    if (digit > 9) return false;
+  for (; at != end; ++at) {
+    const unsigned digit = static_cast<unsigned char>(*at) - unsigned{'0'};
+    if (digit > 9) break;
     sum = sum * 10 + digit;
   }
+  if (at == first || at - first > 18) return nullptr;
   value = sum;
-  return true;
+  return at;
+}
+
+// A token of 1 to 18 decimal digits and nothing else (scan_short_digits); false otherwise.
+inline bool parse_short_digits(std::string_view token, uint64_t& value) {
+  const char* end = token.data() + token.size();
+  return scan_short_digits(token.data(), end, value) == end && !token.empty();
 }
 
 // parse_integer for every token but the plain short ones.
