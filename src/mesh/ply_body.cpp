@@ -98,11 +98,53 @@ void AsciiPlyBody::skip(PlyType, uint64_t count, const PlyProperty& property) {
   }
 }
 
+namespace {
+
+// Plain unsigned digits (at most 18) at `at`, followed by a blank, a line end or the end of
+// the body: their value, and `at` moved past them.
+bool plain_integer(const char*& at, const char* end, uint64_t& value) {
+  const char* after = scan_short_digits(at, end, value);
+  if (!after || (after != end && !is_blank(*after) && !is_line_end(*after))) return false;
+  at = after;
+  return true;
+}
+
+}  // namespace
+
+bool AsciiPlyBody::read_plain_list(const PlyElement& element, uint64_t index, const PlyProperty& list,
+                                   std::vector<int64_t>& items) {
+  const char* at = bytes_.data() + offset_;
+  const char* const end = bytes_.data() + bytes_.size();
+  uint64_t count = 0, item = 0;
+  if (!plain_integer(at, end, count) || static_cast<int64_t>(count) > highest(list.count_type)) return false;
+  items.clear();
+  for (uint64_t k = 0; k < count; ++k) {
+    if (at == end || !is_blank(*at)) return false;
+    while (at != end && is_blank(*at)) ++at;
+    if (!plain_integer(at, end, item) || static_cast<int64_t>(item) > highest(list.type)) return false;
+    items.push_back(static_cast<int64_t>(item));
+  }
+  // What follows the list is ignored, as end() ignores it; the line must only pass check_line.
+  find_suspect();
+  const size_t line_end = std::min(bytes_.find('\n', static_cast<size_t>(at - bytes_.data())), bytes_.size());
+  if (suspect_ < line_end) return false;
+  element_ = &element, index_ = index;
+  ++line_number_;
+  offset_ = line_end + 1;
+  tokens_ = TokenReader(std::string_view());
+  return true;
+}
+
+// After a line with a suspect byte that passed check_line, the search goes on after it.
+void AsciiPlyBody::find_suspect() {
+  if (offset_ > suspect_) suspect_ = next_suspect(bytes_, offset_);
+}
+
 // Lines end in "\n" or "\r\n". Only a line with a suspect byte in it (none, in nearly every
 // file) is looked at byte by byte; the search for the next one spans many lines at a time.
 bool AsciiPlyBody::next_line(std::string_view& line) {
   if (offset_ >= bytes_.size()) return false;
-  if (offset_ > suspect_) suspect_ = next_suspect(bytes_, offset_);  // the last one passed
+  find_suspect();
   size_t end = bytes_.find('\n', offset_);
   if (end == std::string_view::npos) end = bytes_.size();
   line = bytes_.substr(offset_, end - offset_);

@@ -34,6 +34,7 @@ struct ElementPlan {
   bool is_vertex = false;
   bool is_edge = false;
   bool is_face = false;
+  bool is_one_face_list = false;  // a face element whose only property is its index list
   bool skipped = true;    // no property is read
 
   // Bytes per instance when no property is a list; 0 otherwise.
@@ -59,6 +60,7 @@ class Planner {
     else if (element.name == "tristrips") plan_indices(plan, Use::strip);
     else if (element.name == "edge") plan_edge(plan);
     plan.is_face = element.name == "face";
+    plan.is_one_face_list = plan.is_face && plan.uses.size() == 1;
     plan.skipped = std::all_of(plan.uses.begin(), plan.uses.end(), [](Use use) { return use == Use::skip; });
     return plan;
   }
@@ -139,6 +141,10 @@ class ElementWalk {
   void read_instance(const ElementPlan& plan, uint64_t i) {
     const PlyElement& element = *plan.element;
     element_ = &element, index_ = i;
+    if constexpr (!Body::kBinary) {
+      if (plan.is_one_face_list && body_.read_plain_list(element, i, element.properties[0], corners_))
+        return add_face();
+    }
     body_.begin(element, i);
     Vec3 position(0.0);
     int64_t edge[2] = {0, 0};
@@ -192,6 +198,11 @@ class ElementWalk {
 
   void read_face(const PlyProperty& property) {
     read_list(property);
+    add_face();
+  }
+
+  // The face read into corners_.
+  void add_face() {
     if (corners_.size() < 3) fail_here("face has " + std::to_string(corners_.size()) + " corners; at least 3 are needed");
     for (int64_t corner : corners_) checked_index(corner);
     mesh_.add_face(corners_);
