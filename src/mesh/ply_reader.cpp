@@ -228,11 +228,15 @@ class ElementWalk {
     }
   }
 
+  // The message is made apart, so that the check itself is inlined (it runs once per corner).
   int64_t checked_index(int64_t index) {
-    if (index < 0 || static_cast<uint64_t>(index) >= vertex_count_)
-      fail_here(std::string(element_->name == "edge" ? "edge" : "face") + " refers to vertex " +
-                std::to_string(index) + ", but the file has " + std::to_string(vertex_count_) + " vertices");
+    if (index < 0 || static_cast<uint64_t>(index) >= vertex_count_) fail_index(index);
     return index;
+  }
+
+  [[noreturn]] [[gnu::noinline]] void fail_index(int64_t index) const {
+    fail_here(std::string(element_->name == "edge" ? "edge" : "face") + " refers to vertex " +
+              std::to_string(index) + ", but the file has " + std::to_string(vertex_count_) + " vertices");
   }
 
   void add_vertex(const Vec3& position, uint64_t i) {
