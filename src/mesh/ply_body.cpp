@@ -117,11 +117,12 @@ bool AsciiPlyBody::read_plain_list(const PlyElement& element, uint64_t index, co
   const char* const end = bytes_.data() + bytes_.size();
   uint64_t count = 0, item = 0;
   if (!plain_integer(at, end, count) || static_cast<int64_t>(count) > highest(list.count_type)) return false;
+  const auto item_max = static_cast<uint64_t>(highest(list.type));
   items.clear();
   for (uint64_t k = 0; k < count; ++k) {
     if (at == end || !is_blank(*at)) return false;
     while (at != end && is_blank(*at)) ++at;
-    if (!plain_integer(at, end, item) || static_cast<int64_t>(item) > highest(list.type)) return false;
+    if (!plain_integer(at, end, item) || item > item_max) return false;
     items.push_back(static_cast<int64_t>(item));
   }
   // What follows the list is ignored, as end() ignores it; the line must only pass check_line.
