@@ -131,9 +131,8 @@ class ElementWalk {
     }
     // Text needs at least two bytes ("0\n") per instance, binary one: a header that claims
     // more instances than the bytes can hold reserves no more than they can.
-    const uint64_t at_most = std::min<uint64_t>(element.count, body_.remaining() / 2 + 1);
-    if (plan.is_vertex) mesh_.vertices.reserve(at_most);
-    if (plan.is_face) reserve_faces(at_most);
+    if (plan.is_vertex) mesh_.vertices.reserve(std::min<uint64_t>(element.count, body_.remaining() / 2 + 1));
+    if (plan.is_face) reserve_faces(element.count);
     for (uint64_t i = 0; i < element.count; ++i) read_instance(plan, i);
   }
 
@@ -166,12 +165,16 @@ class ElementWalk {
     if (plan.is_edge) mesh_.lines.add(edge);
   }
 
-  // Room for `faces` triangles more (and their growth, should they be polygons); growing
-  // the lists of a large mesh a doubling at a time copied each index about twice.
-  void reserve_faces(uint64_t faces) {
+  // Room for `count` triangles more, or as many as the bytes left could hold as text
+  // ("3 0 1 2\n"), whichever is fewer: growing the lists of a large mesh a doubling at a time
+  // copied each index about twice, and a header that claims billions of faces must not make
+  // us reserve more than four times the file's size (polygons, and binary files of tiny
+  // indices, grow the lists beyond it as before).
+  void reserve_faces(uint64_t count) {
+    const uint64_t faces = std::min<uint64_t>(count, body_.remaining() / 8 + 1);
     IndexLists& lists = mesh_.faces;
     lists.ends.reserve(lists.ends.size() + faces);
-    lists.items.reserve(lists.items.size() + std::min<uint64_t>(3 * faces, body_.remaining() / 2 + 1));
+    lists.items.reserve(lists.items.size() + 3 * faces);
   }
 
   void skip(const PlyProperty& property) {

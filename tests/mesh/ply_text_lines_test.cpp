@@ -159,5 +159,14 @@ TEST(PlyTextLines, ControlBytesAndLoneReturnsAreFoundOnTheirLine) {
   expect_both_ways_alike(with_return);
 }
 
+TEST(PlyTextLines, AHeaderThatClaimsBillionsOfFacesReservesNoMoreThanTheFileHolds) {
+  // Reserving room for 4e9 faces would need 32 GB for their ends alone: a bad_alloc, not this.
+  const std::string ply = header(3, 0).replace(header(3, 0).find("face 0"), 6, "face 4000000000") +
+                          vertex_lines(3) + "3 0 1 2\n";
+  EXPECT_EQ(outcome_of(ply).error,
+            "t.ply: the file ends before all data: the header declares 4000000000 face elements (the file is "
+            "truncated) (face 1)");
+}
+
 }  // namespace
 }  // namespace convray::mesh
