@@ -113,6 +113,8 @@ bool plain_integer(const char*& at, const char* end, uint64_t& value) {
 
 bool AsciiPlyBody::read_plain_list(const PlyElement& element, uint64_t index, const PlyProperty& list,
                                    std::vector<int64_t>& items) {
+  // After a last line without a line end, offset_ is one past the end (see next_line).
+  if (offset_ >= bytes_.size()) return false;
   const char* at = bytes_.data() + offset_;
   const char* const end = bytes_.data() + bytes_.size();
   uint64_t count = 0, item = 0;
