@@ -1,6 +1,8 @@
 #pragma once
 // Small, strict text-scanning helpers shared by the OBJ, OFF and ASCII PLY checks.
-// Numbers are parsed with std::from_chars: exact (correctly rounded) and locale-free.
+// Numbers are parsed with std::from_chars: exact (correctly rounded) and locale-free; only
+// integers of up to 18 digits, which cannot overflow, are summed here directly (faster, and
+// the same value: tests/mesh/text_scan_test.cpp checks them against strtoll).
 // Internal to src/mesh.
 #include <cstddef>
 #include <cstdint>
