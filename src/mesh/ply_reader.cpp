@@ -33,6 +33,8 @@ struct ElementPlan {
   std::vector<Use> uses;  // one per property
   bool is_vertex = false;
   bool is_edge = false;
+  bool is_face = false;
+  bool is_one_face_list = false;  // a face element whose only property is its index list
   bool skipped = true;    // no property is read
 
   // Bytes per instance when no property is a list; 0 otherwise.
@@ -57,6 +59,8 @@ class Planner {
     else if (element.name == "face") plan_indices(plan, Use::face);
     else if (element.name == "tristrips") plan_indices(plan, Use::strip);
     else if (element.name == "edge") plan_edge(plan);
+    plan.is_face = element.name == "face";
+    plan.is_one_face_list = plan.is_face && plan.uses.size() == 1;
     plan.skipped = std::all_of(plan.uses.begin(), plan.uses.end(), [](Use use) { return use == Use::skip; });
     return plan;
   }
@@ -125,8 +129,10 @@ class ElementWalk {
       if (size > 0 && plan.skipped) return body_.skip_fixed(element, size);
       if (size > 0 && element.count > body_.remaining() / size) body_.skip_fixed(element, size);  // fails
     }
-    // Text needs at least two bytes ("0\n") per instance, binary one.
+    // Text needs at least two bytes ("0\n") per instance, binary one: a header that claims
+    // more instances than the bytes can hold reserves no more than they can.
     if (plan.is_vertex) mesh_.vertices.reserve(std::min<uint64_t>(element.count, body_.remaining() / 2 + 1));
+    if (plan.is_face) reserve_faces(element.count);
     for (uint64_t i = 0; i < element.count; ++i) read_instance(plan, i);
   }
 
@@ -134,6 +140,10 @@ class ElementWalk {
   void read_instance(const ElementPlan& plan, uint64_t i) {
     const PlyElement& element = *plan.element;
     element_ = &element, index_ = i;
+    if constexpr (!Body::kBinary) {
+      if (plan.is_one_face_list && body_.read_plain_list(element, i, element.properties[0], corners_))
+        return add_face();
+    }
     body_.begin(element, i);
     Vec3 position(0.0);
     int64_t edge[2] = {0, 0};
@@ -153,6 +163,18 @@ class ElementWalk {
     body_.end();
     if (plan.is_vertex) add_vertex(position, i);
     if (plan.is_edge) mesh_.lines.add(edge);
+  }
+
+  // Room for `count` triangles more, or as many as the bytes left could hold as text
+  // ("3 0 1 2\n"), whichever is fewer: growing the lists of a large mesh a doubling at a time
+  // copied each index about twice, and a header that claims billions of faces must not make
+  // us reserve more than four times the file's size (polygons, and binary files of tiny
+  // indices, grow the lists beyond it as before).
+  void reserve_faces(uint64_t count) {
+    const uint64_t faces = std::min<uint64_t>(count, body_.remaining() / 8 + 1);
+    IndexLists& lists = mesh_.faces;
+    lists.ends.reserve(lists.ends.size() + faces);
+    lists.items.reserve(lists.items.size() + 3 * faces);
   }
 
   void skip(const PlyProperty& property) {
@@ -179,6 +201,11 @@ class ElementWalk {
 
   void read_face(const PlyProperty& property) {
     read_list(property);
+    add_face();
+  }
+
+  // The face read into corners_.
+  void add_face() {
     if (corners_.size() < 3) fail_here("face has " + std::to_string(corners_.size()) + " corners; at least 3 are needed");
     for (int64_t corner : corners_) checked_index(corner);
     mesh_.add_face(corners_);
@@ -204,11 +231,15 @@ class ElementWalk {
     }
   }
 
+  // The message is made apart, so that the check itself is inlined (it runs once per corner).
   int64_t checked_index(int64_t index) {
-    if (index < 0 || static_cast<uint64_t>(index) >= vertex_count_)
-      fail_here(std::string(element_->name == "edge" ? "edge" : "face") + " refers to vertex " +
-                std::to_string(index) + ", but the file has " + std::to_string(vertex_count_) + " vertices");
+    if (index < 0 || static_cast<uint64_t>(index) >= vertex_count_) fail_index(index);
     return index;
+  }
+
+  [[noreturn]] [[gnu::noinline]] void fail_index(int64_t index) const {
+    fail_here(std::string(element_->name == "edge" ? "edge" : "face") + " refers to vertex " +
+              std::to_string(index) + ", but the file has " + std::to_string(vertex_count_) + " vertices");
   }
 
   void add_vertex(const Vec3& position, uint64_t i) {

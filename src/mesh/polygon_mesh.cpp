@@ -53,8 +53,7 @@ bool has_zero_area(const Triangle& t, const std::vector<Vec3>& positions) {
 // Keeps the triangles of one face that span an area. A face none of whose triangles does is
 // counted as dropped, once (a 255-corner face is one face, not its 253 triangles): for a
 // repeated vertex when it names one twice, else for zero area.
-void keep_proper_triangles(const std::vector<Triangle>& triangles, TriangleSoup& soup,
-                           LoadReport& report) {
+void keep_proper_triangles(std::span<const Triangle> triangles, TriangleSoup& soup, LoadReport& report) {
   const size_t before = soup.triangles.size();
   bool repeated_vertex = false;
   for (const Triangle& t : triangles) {
@@ -76,6 +75,13 @@ void add_triangles(const PolygonMesh& polygons, LoadedMesh& mesh, const std::str
   for (size_t f = 0; f < polygons.face_count(); ++f) {
     std::span<const int64_t> face = polygons.face(f);
     check_face(face, f, mesh.soup.vertices.size(), file);
+    if (face.size() == 3) {
+      // A triangle is itself (as triangulate_polygon would return it), without the copies.
+      const Triangle triangle = {static_cast<uint32_t>(face[0]), static_cast<uint32_t>(face[1]),
+                                 static_cast<uint32_t>(face[2])};
+      keep_proper_triangles({&triangle, 1}, mesh.soup, mesh.report);
+      continue;
+    }
     corners.assign(face.begin(), face.end());
     if (corners.size() > 3) ++mesh.report.polygons_triangulated;
     triangles.clear();

@@ -32,6 +32,17 @@ TEST(FuzzRegression, AsciiStlThatAssimpGivesUpOnLeaked) {
             "cr.stl:5: ASCII STL: expected three numbers on the line (face 0)");
 }
 
+TEST(FuzzRegression, PlyFacesMissingAfterALastLineWithoutLineEnd) {
+  // The plain face-line shortcut (AsciiPlyBody::read_plain_list) then started one past the
+  // end of the body and read on from there.
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 3\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 2 1 0";
+  EXPECT_EQ(input_error_of([&] { load_mesh_from_memory(ply, "end.ply"); }),
+            "end.ply: the file ends before all data: the header declares 3 face elements (the file is truncated) "
+            "(face 2)");
+}
+
 TEST(FuzzRegression, AsciiStlNumberAssimpCannotParse) {
   std::string stl = kTriangleStl;
   stl.replace(stl.find("vertex 1 0 0"), 12, "vertex 1 0 nan(7)");

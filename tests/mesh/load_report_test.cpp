@@ -30,6 +30,15 @@ TEST(LoadReport, CountsDroppedAndTriangulatedFaces) {
   EXPECT_EQ(mesh.soup.size(), 6u);
 }
 
+TEST(LoadReport, TriangleFacesKeepTheirCornersInOrder) {
+  LoadedMesh mesh = load_mesh_from_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 3 1 2\nf 2 3 1\nf 1 3 2\n", "order.obj");
+  ASSERT_EQ(mesh.soup.size(), 3u);
+  EXPECT_EQ(mesh.soup.triangles[0], (Triangle{2, 0, 1}));
+  EXPECT_EQ(mesh.soup.triangles[1], (Triangle{1, 2, 0}));
+  EXPECT_EQ(mesh.soup.triangles[2], (Triangle{0, 2, 1}));
+  EXPECT_EQ(mesh.report.polygons_triangulated, 0u);
+}
+
 TEST(LoadReport, CoincidentPositionsCountAsZeroArea) {
   // Different indices, same position: no area, but no repeated index either.
   LoadedMesh mesh = load_mesh_from_memory("v 0 0 0\nv 1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n", "twins.obj");
