@@ -82,9 +82,11 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
     if (hi - lo <= resolution) break;
     double next = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);  // regula falsi of the bracket
     if (have_older && value != last_g && value != older_g && last_g != older_g) {
-      next = t * last_g * older_g / ((value - last_g) * (value - older_g)) +
-             last_t * value * older_g / ((last_g - value) * (last_g - older_g)) +
-             older_t * value * last_g / ((older_g - value) * (older_g - last_g));
+      // Lagrange's form in the values' ratios to the newest one: products of the values
+      // themselves overflow or underflow where g is scaled far from 1 (a strength of 1e200).
+      const double a = last_g / value, b = older_g / value;
+      next = t * a * b / ((1.0 - a) * (1.0 - b)) + last_t * b / ((a - 1.0) * (a - b)) +
+             older_t * a / ((b - 1.0) * (b - a));
     } else if (have_last && value != last_g) {
       next = t - value * (t - last_t) / (value - last_g);
     } else if (!have_last && guess_slope != 0.0 && std::isfinite(guess_slope)) {

@@ -162,6 +162,24 @@ TEST(BracketRefine, InverseQuadraticStepsNeedNoMoreEvaluationsThanSecants) {
   std::printf("evaluations: refiner %d, secants %d\n", refiner_total, secant_total);
 }
 
+// The steps depend on g's values only through their ratios: a function scaled by 1e200 or
+// 1e-160 (a convolution of strength 1e200 minus its threshold) is refined along the same
+// points to rounding, to the same root, in as many evaluations; products of the values
+// themselves would overflow or underflow there.
+TEST(BracketRefine, ScalingTheFunctionChangesNothing) {
+  for (const Case& c : cases()) {
+    if (c.name == "jump") continue;
+    const Outcome plain = refine(c);
+    for (double scale : {1e200, 1e-160}) {
+      Case scaled = c;
+      scaled.g = [&, scale](double x) { return scale * c.g(x); };
+      const Outcome o = refine(scaled);
+      EXPECT_NEAR(o.root, c.root, tolerance(c)) << c.name << " scaled by " << scale;
+      EXPECT_NEAR(o.evaluations, plain.evaluations, 1) << c.name << " scaled by " << scale;
+    }
+  }
+}
+
 // Left open (`close_bracket` false, for a caller that evaluates the root itself): on a smooth
 // simple root the point returned is within the tolerance of the exact root, it was not
 // evaluated (the caller's evaluation replaces the one that closes the bracket), and the
