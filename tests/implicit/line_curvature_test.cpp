@@ -128,15 +128,20 @@ TEST(LineCurvature, LongSegmentNearItsEndUsesTheWholeSkeletonsMoments) {
   EXPECT_GT(tightest, 0.2);  // the configuration does load the bound
 }
 
-TEST(LineCurvature, WideTriangleAgainstThePlanesClosedForm) {
-  const double R = 0.2;
+// One triangle far wider than R in the plane z = 0, strength 1.
+scene::ConvolutionObject wide_triangle(double R) {
   scene::ConvolutionObject object;
   scene::MeshComponent mesh;
   mesh.triangles.push_back({{-3, -3, 0}, {3, -3, 0}, {0, 3, 0}});
   mesh.weight = {1.0, R};
   object.meshes.push_back(mesh);
   object.threshold = field::threshold_for_offset(1.0, R, 0.5 * R);
-  const ConvolutionSurface surface(object);
+  return object;
+}
+
+TEST(LineCurvature, WideTriangleAgainstThePlanesClosedForm) {
+  const double R = 0.2;
+  const ConvolutionSurface surface(wide_triangle(R));
   const ConvolutionSurface::Impl& s = surface.impl();
   const uint32_t id = s.triangle_base;
   // Along the normal, from below the plane: t is R + h.
@@ -172,13 +177,7 @@ TEST(LineCurvature, WideTriangleAgainstThePlanesClosedForm) {
 // 2 pi (1 - x)^2 there (0.89 pi at x = 1/3, where this bound is 0).
 TEST(LineCurvature, NoDownwardBendFurtherThanRootThreeOfRFromAWideTriangle) {
   const double R = 0.2;
-  scene::ConvolutionObject object;
-  scene::MeshComponent mesh;
-  mesh.triangles.push_back({{-3, -3, 0}, {3, -3, 0}, {0, 3, 0}});
-  mesh.weight = {1.0, R};
-  object.meshes.push_back(mesh);
-  object.threshold = field::threshold_for_offset(1.0, R, 0.5 * R);
-  const ConvolutionSurface surface(object);
+  const ConvolutionSurface surface(wide_triangle(R));
   const ConvolutionSurface::Impl& s = surface.impl();
   const uint32_t id = s.triangle_base;
   const Ray normal{{0.1, -0.2, -R}, {0, 0, 1}};  // t = R + h, h the height above the plane
