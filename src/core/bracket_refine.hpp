@@ -1,7 +1,7 @@
 #pragma once
 // The bracketed root refiners every layer shares (implicit's tracers, geometry's shapes,
-// polygonize's edge crossings): the safeguarded interpolating refiner and plain bisection to adjacent
-// doubles.
+// polygonize's edge crossings): the safeguarded interpolating refiner and plain bisection to
+// adjacent doubles.
 //
 // refine_bracket: the safeguarded bracketed refiner of the ray tracers. On a sign-changing bracket
 // it steps by inverse quadratic interpolation through the last three points evaluated (the
