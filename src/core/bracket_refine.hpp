@@ -60,7 +60,7 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
   // The one before it; before the second point, the end of the bracket nearer the first.
   double older_t = std::abs(t - lo) < std::abs(hi - t) ? lo : hi;
   double older_g = older_t == lo ? g_lo : g_hi;
-  bool have_last = false, have_older = false;
+  bool have_last = false;
   double previous_step = hi - lo;
   int slow = 0;  // steps in a row that did not halve
   for (int iteration = 0; iteration < 200; ++iteration) {
@@ -81,7 +81,7 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
     }
     if (hi - lo <= resolution) break;
     double next = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);  // regula falsi of the bracket
-    if (have_older && value != last_g && value != older_g && last_g != older_g) {
+    if (have_last && value != last_g && value != older_g && last_g != older_g) {
       // Lagrange's form in the values' ratios to the newest one: products of the values
       // themselves overflow or underflow where g is scaled far from 1 (a strength of 1e200).
       const double a = last_g / value, b = older_g / value;
@@ -113,7 +113,6 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
       older_t = last_t;
       older_g = last_g;
     }
-    have_older = true;
     last_t = t;
     last_g = value;
     have_last = true;
