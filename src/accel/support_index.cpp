@@ -173,6 +173,10 @@ size_t SupportIndex::size() const { return impl_->size; }
 Box3 SupportIndex::bounds() const { return impl_->bounds; }
 size_t SupportIndex::instance_count() const { return impl_->instances.size(); }
 
+const std::vector<std::vector<BoundingBall>>& SupportIndex::triangle_balls() const {
+  return impl_->balls;
+}
+
 size_t SupportIndex::memory_bytes() const {
   size_t bytes = size_t(impl_->embree_bytes) + impl_->sources.capacity() * sizeof(GeometrySource);
   for (const auto& prebuilt : impl_->instances) bytes += prebuilt->memory_bytes();

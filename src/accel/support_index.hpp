@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "accel/support_shapes.hpp"
 #include "accel/triangle_supports.hpp"
 #include "field/arc.hpp"
 #include "field/segment.hpp"
@@ -63,6 +64,9 @@ class SupportIndex {
   size_t memory_bytes() const;
   // How many triangle groups are placed instances of prebuilt hierarchies.
   size_t instance_count() const;
+  // The bounding balls of each non-empty triangle group's supports (triangle_bounding_ball),
+  // in the groups' order: made once here, for the callbacks and for callers that want them.
+  const std::vector<std::vector<BoundingBall>>& triangle_balls() const;
 
   // Appends every primitive whose support the line origin + t direction (unit direction)
   // crosses with some t in [tmin, tmax]; the interval is the whole crossing, not clipped.

@@ -206,10 +206,9 @@ double ConvolutionSurface::Impl::mean_support_width() const {
     sum += capsule_radii[i] + 0.5 * glm::length(capsules[i].b - capsules[i].a);
   }
   for (size_t i = 0; i < arcs.size(); ++i) sum += arc_radii[i] + arcs[i].radius;
-  for (const Group& g : groups) {
-    for (uint32_t i = g.first_triangle; i < g.end_triangle; ++i) {
-      sum += accel::triangle_bounding_ball(triangles[i], g.radius).radius;
-    }
+  // The index's balls, made once (the smallest balls cost about 10 ms on 200,000 triangles).
+  for (const std::vector<accel::BoundingBall>& balls : index->triangle_balls()) {
+    for (const accel::BoundingBall& ball : balls) sum += ball.radius;
   }
   const size_t count = sphere_radii.size() + capsules.size() + arcs.size() + triangles.size();
   return count > 0 ? 2.0 * sum / double(count) : 0.0;
