@@ -1,5 +1,6 @@
 #include "accel/triangle_span_batch.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -113,13 +114,17 @@ struct Lane {
 void TriangleSpanBatch::gather(std::span<const field::Triangle> triangles,
                                std::span<const uint32_t> ids) {
   const size_t n = ids.size();
+  // Whole SIMD widths, the last triangle repeated: compute() then has no scalar remainder,
+  // which cost about as much as the vector loop on a line's few candidates.
+  const size_t lanes = (n + kSimdWidth - 1) / kSimdWidth * kSimdWidth;
   for (auto& vertex : corner_) {
-    for (auto& axis : vertex) axis.resize(n);
+    for (auto& axis : vertex) axis.resize(lanes);
   }
-  enter_.resize(n);
-  exit_.resize(n);
-  for (size_t k = 0; k < n; ++k) {
-    const field::Triangle& t = triangles[ids[k]];
+  size_ = n;
+  enter_.resize(lanes);
+  exit_.resize(lanes);
+  for (size_t k = 0; k < lanes; ++k) {
+    const field::Triangle& t = triangles[ids[std::min(k, n - 1)]];
     const Vec3* v[3] = {&t.a, &t.b, &t.c};
     for (int i = 0; i < 3; ++i) {
       corner_[i][0][k] = v[i]->x;
@@ -138,7 +143,7 @@ void TriangleSpanBatch::compute(const Vec3& origin, const Vec3& direction, doubl
   const double *cx = corner_[2][0].data(), *cy = corner_[2][1].data(), *cz = corner_[2][2].data();
   double* enter = enter_.data();
   double* exit = exit_.data();
-  const size_t n = size();
+  const size_t n = enter_.size();  // whole SIMD widths (gather)
 #pragma GCC ivdep  // (omp simd would not vectorize the P aggregates with GCC 12)
   for (size_t k = 0; k < n; ++k) {
     const P a{ax[k], ay[k], az[k]}, b{bx[k], by[k], bz[k]}, e{cx[k], cy[k], cz[k]};

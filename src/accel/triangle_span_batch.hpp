@@ -21,12 +21,14 @@ class TriangleSpanBatch {
   // `direction` is of unit length.
   void compute(const Vec3& origin, const Vec3& direction, double radius);
 
-  size_t size() const { return enter_.size(); }
+  size_t size() const { return size_; }
   Span span(size_t k) const { return {enter_[k], exit_[k]}; }
 
  private:
   std::vector<double> corner_[3][3];  // corner_[vertex][axis]
-  std::vector<double> enter_, exit_;
+  static constexpr size_t kSimdWidth = 4;  // doubles in an AVX2 register
+  std::vector<double> enter_, exit_;  // rounded up to whole SIMD widths
+  size_t size_ = 0;
 };
 
 }  // namespace convray::accel

@@ -79,7 +79,7 @@ struct ChunkState {
   double pie_y[3][kChunk], pie_x[3][kChunk];  // per edge: θ = atan2(pie_y, pie_x)
   double r0sq[kChunk], h[kChunk], scale[kChunk];
   double nx[kChunk], ny[kChunk], nz[kChunk];
-  bool touches[kChunk], o_inside[kChunk];
+  int64_t touches[kChunk], o_inside[kChunk];  // 0 or 1 (64-bit: see ChunkLanes)
 };
 
 // Raw pointers to one edge's arrays, so the vectorizer sees plain strided loads.
@@ -184,18 +184,46 @@ using detail::ChunkState;
 using detail::EdgeTerm;
 using detail::EdgeView;
 using detail::kChunk;
+using detail::simd_lanes;
+
+namespace {
+// The lanes a call sums: all of the batch's in order, or those listed.
+struct Contiguous {
+  size_t operator()(size_t t) const { return t; }
+};
+struct Listed {
+  const uint32_t* list;
+  size_t operator()(size_t t) const { return list[t]; }
+};
+
+// A chunk's lanes as its loops read them (from 0), rounded up to whole SIMD widths with the
+// last lane repeated; the loops mask the repeats out (their scale and weight are 0). Without
+// them every loop had a scalar remainder, and the window march's chunks hold a few lanes:
+// the remainder was most of the batch's time (perf: 73 % of its samples on scalar
+// instructions at R = 1). Contiguous lanes are listed too: one kind of loop.
+struct ChunkLanes {
+  uint64_t ids[kChunk];  // 64-bit: a 32-bit type in the loops makes GCC pick 8 lanes, and
+                        // then run chunks of fewer than 8 scalar
+};
+template <class Index>
+const uint64_t* chunk_lanes(Index index, size_t base, size_t lanes, ChunkLanes& buffer) {
+  for (size_t t = 0; t < lanes; ++t) buffer.ids[t] = index(base + t);
+  for (size_t t = lanes; t < simd_lanes(lanes); ++t) buffer.ids[t] = buffer.ids[lanes - 1];
+  return buffer.ids;
+}
+}  // namespace
 
 // Returns whether any lane has a pie slice, i.e. whether phase 2 needs its atan2.
-template <bool kGradient, class Index>
-bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t base,
-                              size_t lanes, Index index, const EdgeView* views,
+template <bool kGradient>
+bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t lanes,
+                              const uint64_t* ids, const EdgeView* views,
                               ChunkState& st) const {
   const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
-  int any_pie = 0;
+  int64_t any_pie = 0;
 #pragma omp simd reduction(| : any_pie)
-  for (size_t t = 0; t < lanes; ++t) {
-    const size_t i = index(base + t);
+  for (size_t t = 0; t < simd_lanes(lanes); ++t) {
+    const size_t i = ids[t];
     const double nx = nxs[i], ny = nys[i], nz = nzs[i];
     const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
     const double r0sq_raw = r2 - h * h;
@@ -214,15 +242,11 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
     st.pie_x[0][t] = e0.pie_x, st.pie_x[1][t] = e1.pie_x, st.pie_x[2][t] = e2.pie_x;
     st.r0sq[t] = r0sq, st.h[t] = h;
     st.nx[t] = nx, st.ny[t] = ny, st.nz[t] = nz;
-    st.scale[t] = in_range ? ws[i] * inv_norm : 0.0;
+    st.scale[t] = in_range && t < lanes ? ws[i] * inv_norm : 0.0;
     st.touches[t] = e0.touches | e1.touches | e2.touches;
     st.o_inside[t] = !(e0.o_outside | e1.o_outside | e2.o_outside);
-    any_pie |= int(in_range) & int(st.touches[t]) &
-               (int(e0.pie_y != 0.0) | int(e1.pie_y != 0.0) | int(e2.pie_y != 0.0));
-  }
-  // Angle 0 in the lanes phase 2's atan2 loop rounds up to (see detail::simd_lanes).
-  for (size_t t = lanes; t < detail::simd_lanes(lanes); ++t) {
-    for (int k = 0; k < 3; ++k) st.pie_y[k][t] = 0.0, st.pie_x[k][t] = 1.0;
+    any_pie |= int64_t(in_range) & st.touches[t] &
+               (int64_t(e0.pie_y != 0.0) | int64_t(e1.pie_y != 0.0) | int64_t(e2.pie_y != 0.0));
   }
   return any_pie != 0;
 }
@@ -230,17 +254,16 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
 // Whether every corner of the chunk's triangles lies within R of p: a cheap look before the
 // lean path, which would otherwise compute every edge term to find out (the window march
 // hands over mostly clipped triangles, its wholly inside ones being summed as quartics).
-template <class Index>
-bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t base, size_t lanes,
-                                   Index index, const EdgeView* views) const {
+bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t lanes, const uint64_t* ids,
+                                   const EdgeView* views) const {
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];
-  int outside = 0;
+  int64_t outside = 0;
 #pragma omp simd reduction(| : outside)
-  for (size_t t = 0; t < lanes; ++t) {
-    const size_t i = index(base + t);
+  for (size_t t = 0; t < simd_lanes(lanes); ++t) {  // the repeated lanes are real ones
+    const size_t i = ids[t];
     auto beyond = [&](const EdgeView& v) {
       const double dx = v.vx[i] - p.x, dy = v.vy[i] - p.y, dz = v.vz[i] - p.z;
-      return int(dx * dx + dy * dy + dz * dz >= r2);
+      return int64_t(dx * dx + dy * dy + dz * dz >= r2);
     };
     outside |= beyond(v0) | beyond(v1) | beyond(v2);
   }
@@ -251,28 +274,28 @@ bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t base, size_t
 // support sphere, nothing is clipped and each lane's value is its three inside parts. The
 // same pass checks the assumption (every corner within R); if it fails, nothing is added
 // and the caller takes the general path for this chunk.
-template <bool kGradient, class Index>
+template <bool kGradient>
 bool TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm,
-                                             size_t base, size_t lanes, Index index,
+                                             size_t lanes, const uint64_t* ids,
                                              const EdgeView* views, Accumulator& acc) const {
   const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
   double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
-  int outside = 0;
+  int64_t outside = 0;
 #pragma omp simd reduction(+ : sum, sgx, sgy, sgz) reduction(| : outside)
-  for (size_t t = 0; t < lanes; ++t) {
-    const size_t i = index(base + t);
+  for (size_t t = 0; t < simd_lanes(lanes); ++t) {
+    const size_t i = ids[t];
     const double nx = nxs[i], ny = nys[i], nz = nzs[i];
     const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
     const double r0sq = r2 - h * h;
     const EdgeTerm e0 = detail::edge_term<kGradient, true>(v0, i, p, r0sq, 0.0);
     const EdgeTerm e1 = detail::edge_term<kGradient, true>(v1, i, p, r0sq, 0.0);
     const EdgeTerm e2 = detail::edge_term<kGradient, true>(v2, i, p, r0sq, 0.0);
-    outside |= int(e0.corner_dist2 >= r2) | int(e1.corner_dist2 >= r2) |
-               int(e2.corner_dist2 >= r2);
+    outside |= int64_t(e0.corner_dist2 >= r2) | int64_t(e1.corner_dist2 >= r2) |
+               int64_t(e2.corner_dist2 >= r2);
     // The weight: a repeated triangle's multiplicity (a zero-area lane has all-zero edge
     // data, so its terms are exactly 0 whatever its weight).
-    const double w = ws[i];
+    const double w = t < lanes ? ws[i] : 0.0;
     sum += w * (e0.inside + e1.inside + e2.inside);
     if constexpr (kGradient) {
       const double dn = -2.0 * h * (e0.inside_dr0 + e1.inside_dr0 + e2.inside_dr0);
@@ -299,17 +322,19 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
                 e.uz.data(), e.mx.data(), e.my.data(), e.mz.data(), e.length.data()};
   }
   ChunkState st;
+  ChunkLanes chunk;
   bool try_lean = try_wholly_inside;
   for (size_t base = 0; base < count; base += kChunk) {
     const size_t lanes = std::min(kChunk, count - base);
+    const uint64_t* ids = chunk_lanes(index, base, lanes, chunk);
     // The lean path while chunks keep being wholly inside the support sphere (large radii);
     // after one that is not, the general path, until a chunk without pie slices suggests
     // trying again.
-    if (try_lean && !acc.per_triangle && corners_within(p, r2, base, lanes, index, views) &&
-        accumulate_wholly_inside<kGradient>(p, r2, inv_norm, base, lanes, index, views, acc)) {
+    if (try_lean && !acc.per_triangle && corners_within(p, r2, lanes, ids, views) &&
+        accumulate_wholly_inside<kGradient>(p, r2, inv_norm, lanes, ids, views, acc)) {
       continue;
     }
-    const bool any_pie = phase_one<kGradient>(p, r2, inv_norm, base, lanes, index, views, st);
+    const bool any_pie = phase_one<kGradient>(p, r2, inv_norm, lanes, ids, views, st);
     try_lean = try_wholly_inside && !any_pie;
     phase_two<kGradient>(st, base, lanes, any_pie, acc);
   }
@@ -324,16 +349,16 @@ void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, b
   double theta[kChunk];
   if (any_pie) {
 #pragma omp simd
-    for (size_t t = 0; t < detail::simd_lanes(lanes); ++t) {
+    for (size_t t = 0; t < simd_lanes(lanes); ++t) {
       theta[t] = atan2(st.pie_y[0][t], st.pie_x[0][t]) + atan2(st.pie_y[1][t], st.pie_x[1][t]) +
                  atan2(st.pie_y[2][t], st.pie_x[2][t]);
     }
   } else {
-    std::fill(theta, theta + lanes, 0.0);
+    std::fill(theta, theta + simd_lanes(lanes), 0.0);
   }
   double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
 #pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
-  for (size_t t = 0; t < lanes; ++t) {
+  for (size_t t = 0; t < simd_lanes(lanes); ++t) {  // the repeated lanes' scale is 0
     const double r0sq = st.r0sq[t];
     const double r4 = r0sq * r0sq;
     // No edge reaches the disk: it is wholly inside the triangle or wholly outside.
@@ -341,7 +366,7 @@ void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, b
     const double value =
         st.touches[t] ? st.inside[t] + r4 * r0sq * theta[t] : r4 * r0sq * whole;
     sum += st.scale[t] * value;
-    if (acc.per_triangle) acc.per_triangle[base + t] = st.scale[t] * value;
+    if (acc.per_triangle && t < lanes) acc.per_triangle[base + t] = st.scale[t] * value;
     if constexpr (kGradient) {
       const double inplane = st.touches[t] ? 1.0 : 0.0;
       const double dr0 = st.touches[t] ? st.inside_dr0[t] + 3.0 * r4 * theta[t] : 3.0 * r4 * whole;
@@ -354,16 +379,6 @@ void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, b
   acc.value += sum;
   acc.gradient += Vec3(sgx, sgy, sgz);
 }
-
-namespace {
-struct Contiguous {
-  size_t operator()(size_t t) const { return t; }
-};
-struct Listed {
-  const uint32_t* list;
-  size_t operator()(size_t t) const { return list[t]; }
-};
-}  // namespace
 
 double TriangleBatch::value(const Vec3& p, double radius) const {
   Accumulator acc;

@@ -71,19 +71,19 @@ class TriangleBatch {
   template <bool kGradient, class Index>
   void evaluate(const Vec3& p, double radius, size_t count, Index index, Accumulator& acc,
                 bool try_wholly_inside = true) const;
-  template <class Index>
-  bool corners_within(const Vec3& p, double r2, size_t base, size_t lanes, Index index,
+  // The chunk's loops: `lanes` lanes listed in `ids`, padded to whole SIMD widths.
+  bool corners_within(const Vec3& p, double r2, size_t lanes, const uint64_t* ids,
                       const detail::EdgeView* views) const;
-  template <bool kGradient, class Index>
-  bool accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm, size_t base,
-                                size_t lanes, Index index, const detail::EdgeView* views,
+  template <bool kGradient>
+  bool accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm, size_t lanes,
+                                const uint64_t* ids, const detail::EdgeView* views,
                                 Accumulator& acc) const;
   template <bool kGradient>
   void phase_two(const detail::ChunkState& st, size_t base, size_t lanes, bool any_pie,
                  Accumulator& acc) const;
-  template <bool kGradient, class Index>
-  bool phase_one(const Vec3& p, double r2, double inv_norm, size_t base, size_t lanes,
-                 Index index, const detail::EdgeView* views, detail::ChunkState& st) const;
+  template <bool kGradient>
+  bool phase_one(const Vec3& p, double r2, double inv_norm, size_t lanes, const uint64_t* ids,
+                 const detail::EdgeView* views, detail::ChunkState& st) const;
 
   std::vector<double> nx_, ny_, nz_;  // unit normal (zero for zero-area triangles)
   std::vector<double> weight_;        // the triangle's weight (1 unless given), 0 for zero area

@@ -3,6 +3,10 @@
 #include <algorithm>
 
 namespace convray::implicit {
+namespace {
+constexpr size_t kSimdWidth = 4;  // doubles in an AVX2 register
+size_t whole_widths(size_t n) { return (n + kSimdWidth - 1) / kSimdWidth * kSimdWidth; }
+}  // namespace
 
 // The arrays only grow: resizing them down and up again for every cluster filled the new
 // rows with zeros each time.
@@ -11,6 +15,7 @@ void DownBendTable::reset(size_t n) {
   live_from_ = 0;
   live_at_ = -kInfinity;
   entered_ = 0;
+  n += kSimdWidth - 1;  // room for sum()'s last SIMD width, from any first live row
   if (n <= enter_.size()) return;
   for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &r2_, &measure_, &limit_,
                   &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_,
@@ -77,8 +82,11 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
   const double *h0 = h0_.data(), *h1 = h1_.data(), *any = anywhere_.data();
   const double *o00 = o00_.data(), *o01 = o01_.data(), *o10 = o10_.data(), *o11 = o11_.data();
   const double *o20 = o20_.data(), *o21 = o21_.data(), *lo = lo_.data(), *hi = hi_.data();
+  // Whole SIMD widths (the rows past n are spare: reset() made room): a scalar remainder
+  // of up to three rows cost about as much as the vector loop on the march's short tables.
+  const size_t end = first + whole_widths(n - first);
 #pragma omp simd
-  for (size_t k = first; k < n; ++k) {
+  for (size_t k = first; k < end; ++k) {
     const double own = triangle_down_bend(weight[k], radius[k], r2[k], measure[k], limit[k],
                                           h0[k], h1[k], o00[k], o01[k], o10[k], o11[k], o20[k],
                                           o21[k], lo[k], hi[k], a, b);
