@@ -97,6 +97,18 @@ void batch_field_listed(benchmark::State& state, bool clipped) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(lanes.size()));
 }
 
+// The same, values only: the march's bracketing and refining samples.
+void batch_value_listed(benchmark::State& state, bool clipped) {
+  auto tris = make_triangles(clipped);
+  tris.resize(32);
+  const convray::field::TriangleBatch batch(tris);
+  const double r = radius_for(clipped);
+  std::vector<uint32_t> lanes;
+  for (uint32_t i = 0; i < uint32_t(state.range(0)); ++i) lanes.push_back(i * 32 / uint32_t(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(batch.value(Vec3(0.0), r, lanes, false));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(lanes.size()));
+}
+
 std::vector<convray::field::Segment> make_segments() {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -133,6 +145,7 @@ BENCHMARK_CAPTURE(batch_field, wholly_inside, false);
 BENCHMARK_CAPTURE(batch_field, clipped, true);
 BENCHMARK_CAPTURE(batch_field_listed, wholly_inside, false)->Arg(8)->Arg(9);
 BENCHMARK_CAPTURE(batch_field_listed, clipped, true)->Arg(5)->Arg(8)->Arg(9)->Arg(11);
+BENCHMARK_CAPTURE(batch_value_listed, clipped, true)->Arg(3)->Arg(5)->Arg(8)->Arg(11)->Arg(32);
 BENCHMARK(segment_value);
 BENCHMARK(segment_batch_value);
 

@@ -30,12 +30,15 @@ void TriangleBatch::assign(std::span<const Triangle> triangles) {
 
 // Every lane is then written whole by set_lane: no fill first (the batches of the window
 // march are reassigned for every ray, and filling 34 arrays was 2 % of a render).
+// The arrays are rounded up to whole SIMD widths: the loops read the lanes past size_ (and
+// mask them out); they hold zeros or an earlier triangle, finite either way.
 void TriangleBatch::resize(size_t n) {
   size_ = n;
-  for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->resize(n);
+  const size_t padded = (n + kSimdWidth - 1) / kSimdWidth * kSimdWidth;
+  for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->resize(padded);
   for (EdgeArrays& e : edges_) {
     for (auto* v : {&e.vx, &e.vy, &e.vz, &e.ux, &e.uy, &e.uz, &e.mx, &e.my, &e.mz, &e.length}) {
-      v->resize(n);
+      v->resize(padded);
     }
   }
 }
@@ -62,13 +65,13 @@ void TriangleBatch::set_lane(size_t i, const Triangle& triangle, const TriangleF
 namespace detail {
 
 constexpr size_t kChunk = 64;
-// The atan2 loop runs over whole SIMD widths: a chunk of 7 lanes otherwise made one AVX2, one
-// SSE and one scalar call of libmvec's and libm's atan2, each about as dear as the 4-wide one
-// (the three were 7.5 % of a render of the dragon at R = 1, a third of it scalar).
-constexpr size_t kAtanWidth = 4;
-static_assert(kChunk % kAtanWidth == 0);
+// Every loop runs over whole SIMD widths (see Listed below). For the atan2 loop: a chunk of 7
+// lanes otherwise made one AVX2, one SSE and one scalar call of libmvec's and libm's atan2,
+// each about as dear as the 4-wide one (7.5 % of a render of the dragon at R = 1).
+static_assert(kChunk % TriangleBatch::kSimdWidth == 0);
 constexpr size_t simd_lanes(size_t lanes) {
-  return (lanes + kAtanWidth - 1) / kAtanWidth * kAtanWidth;
+  return (lanes + TriangleBatch::kSimdWidth - 1) / TriangleBatch::kSimdWidth *
+         TriangleBatch::kSimdWidth;
 }
 
 // What phase 1 leaves for each lane of a chunk; phase 2 adds the pie-slice angles.
@@ -187,44 +190,49 @@ using detail::kChunk;
 using detail::simd_lanes;
 
 namespace {
-// The lanes a call sums: all of the batch's in order, or those listed.
+// The lanes a call sums: all of the batch's in order (the arrays are padded to whole SIMD
+// widths, see resize), or those listed, copied a chunk at a time with the last lane repeated
+// up to a whole SIMD width (ListedChunk). Every loop then runs on whole widths and masks the
+// extra lanes out (their scale and weight are 0): a scalar remainder of up to three lanes
+// cost about as much as the vector loop on the window march's few lanes per chunk. The lists
+// and flags are 64-bit: a 32-bit type in a loop made GCC pick 8 lanes, and run any chunk of
+// fewer than 8 scalar.
 struct Contiguous {
   size_t operator()(size_t t) const { return t; }
 };
 struct Listed {
-  const uint32_t* list;
+  const uint64_t* list;
   size_t operator()(size_t t) const { return list[t]; }
 };
-
-// A chunk's lanes as its loops read them (from 0), rounded up to whole SIMD widths with the
-// last lane repeated; the loops mask the repeats out (their scale and weight are 0). Without
-// them every loop had a scalar remainder, and the window march's chunks hold a few lanes:
-// the remainder was most of the batch's time (perf: 73 % of its samples on scalar
-// instructions at R = 1). Contiguous lanes are listed too: one kind of loop.
-struct ChunkLanes {
-  uint64_t ids[kChunk];  // 64-bit: a 32-bit type in the loops makes GCC pick 8 lanes, and
-                        // then run chunks of fewer than 8 scalar
+struct ListedChunk {
+  uint64_t ids[kChunk];
 };
-template <class Index>
-const uint64_t* chunk_lanes(Index index, size_t base, size_t lanes, ChunkLanes& buffer) {
-  for (size_t t = 0; t < lanes; ++t) buffer.ids[t] = index(base + t);
-  for (size_t t = lanes; t < simd_lanes(lanes); ++t) buffer.ids[t] = buffer.ids[lanes - 1];
-  return buffer.ids;
+Contiguous chunk_lanes(Contiguous index, size_t, size_t, ListedChunk&) { return index; }
+// Listed lanes from `list` (32-bit, as callers keep them), the chunk from `base`.
+Listed chunk_lanes(const uint32_t* list, size_t base, size_t lanes, ListedChunk& chunk) {
+  for (size_t t = 0; t < lanes; ++t) chunk.ids[t] = list[base + t];
+  for (size_t t = lanes; t < simd_lanes(lanes); ++t) chunk.ids[t] = chunk.ids[lanes - 1];
+  return Listed{chunk.ids};
 }
+// Where the chunk's lanes start for its index: listed chunks are copied from 0.
+size_t chunk_base(Contiguous, size_t base) { return base; }
+size_t chunk_base(const uint32_t*, size_t) { return 0; }
 }  // namespace
 
 // Returns whether any lane has a pie slice, i.e. whether phase 2 needs its atan2.
-template <bool kGradient>
-bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t lanes,
-                              const uint64_t* ids, const EdgeView* views,
+template <bool kGradient, class Index>
+bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t base,
+                              size_t lanes, Index index, const EdgeView* views,
                               ChunkState& st) const {
   const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
   int64_t any_pie = 0;
 #pragma omp simd reduction(| : any_pie)
   for (size_t t = 0; t < simd_lanes(lanes); ++t) {
-    const size_t i = ids[t];
-    const double nx = nxs[i], ny = nys[i], nz = nzs[i];
+    const size_t i = index(base + t);
+    // Every load unconditional: a load under a condition (ws[i] inside the select) needs a
+    // masked gather, which GCC does not emulate, and the whole loop then stayed scalar.
+    const double nx = nxs[i], ny = nys[i], nz = nzs[i], weight = ws[i];
     const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
     const double r0sq_raw = r2 - h * h;
     const bool in_range = r0sq_raw > 0.0;
@@ -242,7 +250,7 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
     st.pie_x[0][t] = e0.pie_x, st.pie_x[1][t] = e1.pie_x, st.pie_x[2][t] = e2.pie_x;
     st.r0sq[t] = r0sq, st.h[t] = h;
     st.nx[t] = nx, st.ny[t] = ny, st.nz[t] = nz;
-    st.scale[t] = in_range && t < lanes ? ws[i] * inv_norm : 0.0;
+    st.scale[t] = in_range && t < lanes ? weight * inv_norm : 0.0;
     st.touches[t] = e0.touches | e1.touches | e2.touches;
     st.o_inside[t] = !(e0.o_outside | e1.o_outside | e2.o_outside);
     any_pie |= int64_t(in_range) & st.touches[t] &
@@ -254,18 +262,19 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
 // Whether every corner of the chunk's triangles lies within R of p: a cheap look before the
 // lean path, which would otherwise compute every edge term to find out (the window march
 // hands over mostly clipped triangles, its wholly inside ones being summed as quartics).
-bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t lanes, const uint64_t* ids,
-                                   const EdgeView* views) const {
+template <class Index>
+bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t base, size_t lanes,
+                                   Index index, const EdgeView* views) const {
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];
   int64_t outside = 0;
 #pragma omp simd reduction(| : outside)
-  for (size_t t = 0; t < simd_lanes(lanes); ++t) {  // the repeated lanes are real ones
-    const size_t i = ids[t];
+  for (size_t t = 0; t < simd_lanes(lanes); ++t) {
+    const size_t i = index(base + t);
     auto beyond = [&](const EdgeView& v) {
       const double dx = v.vx[i] - p.x, dy = v.vy[i] - p.y, dz = v.vz[i] - p.z;
       return int64_t(dx * dx + dy * dy + dz * dz >= r2);
     };
-    outside |= beyond(v0) | beyond(v1) | beyond(v2);
+    outside |= int64_t(t < lanes) & (beyond(v0) | beyond(v1) | beyond(v2));
   }
   return outside == 0;
 }
@@ -274,9 +283,9 @@ bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t lanes, const
 // support sphere, nothing is clipped and each lane's value is its three inside parts. The
 // same pass checks the assumption (every corner within R); if it fails, nothing is added
 // and the caller takes the general path for this chunk.
-template <bool kGradient>
+template <bool kGradient, class Index>
 bool TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm,
-                                             size_t lanes, const uint64_t* ids,
+                                             size_t base, size_t lanes, Index index,
                                              const EdgeView* views, Accumulator& acc) const {
   const double *nxs = nx_.data(), *nys = ny_.data(), *nzs = nz_.data(), *ws = weight_.data();
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
@@ -284,18 +293,19 @@ bool TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double in
   int64_t outside = 0;
 #pragma omp simd reduction(+ : sum, sgx, sgy, sgz) reduction(| : outside)
   for (size_t t = 0; t < simd_lanes(lanes); ++t) {
-    const size_t i = ids[t];
-    const double nx = nxs[i], ny = nys[i], nz = nzs[i];
+    const size_t i = index(base + t);
+    const double nx = nxs[i], ny = nys[i], nz = nzs[i], weight = ws[i];
     const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
     const double r0sq = r2 - h * h;
     const EdgeTerm e0 = detail::edge_term<kGradient, true>(v0, i, p, r0sq, 0.0);
     const EdgeTerm e1 = detail::edge_term<kGradient, true>(v1, i, p, r0sq, 0.0);
     const EdgeTerm e2 = detail::edge_term<kGradient, true>(v2, i, p, r0sq, 0.0);
-    outside |= int64_t(e0.corner_dist2 >= r2) | int64_t(e1.corner_dist2 >= r2) |
-               int64_t(e2.corner_dist2 >= r2);
+    outside |= int64_t(t < lanes) & (int64_t(e0.corner_dist2 >= r2) |
+                                     int64_t(e1.corner_dist2 >= r2) |
+                                     int64_t(e2.corner_dist2 >= r2));
     // The weight: a repeated triangle's multiplicity (a zero-area lane has all-zero edge
     // data, so its terms are exactly 0 whatever its weight).
-    const double w = t < lanes ? ws[i] : 0.0;
+    const double w = t < lanes ? weight : 0.0;
     sum += w * (e0.inside + e1.inside + e2.inside);
     if constexpr (kGradient) {
       const double dn = -2.0 * h * (e0.inside_dr0 + e1.inside_dr0 + e2.inside_dr0);
@@ -322,19 +332,22 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
                 e.uz.data(), e.mx.data(), e.my.data(), e.mz.data(), e.length.data()};
   }
   ChunkState st;
-  ChunkLanes chunk;
+  ListedChunk chunk;
   bool try_lean = try_wholly_inside;
   for (size_t base = 0; base < count; base += kChunk) {
     const size_t lanes = std::min(kChunk, count - base);
-    const uint64_t* ids = chunk_lanes(index, base, lanes, chunk);
+    const auto lanes_of = chunk_lanes(index, base, lanes, chunk);
+    const size_t from = chunk_base(index, base);
     // The lean path while chunks keep being wholly inside the support sphere (large radii);
     // after one that is not, the general path, until a chunk without pie slices suggests
     // trying again.
-    if (try_lean && !acc.per_triangle && corners_within(p, r2, lanes, ids, views) &&
-        accumulate_wholly_inside<kGradient>(p, r2, inv_norm, lanes, ids, views, acc)) {
+    if (try_lean && !acc.per_triangle && corners_within(p, r2, from, lanes, lanes_of, views) &&
+        accumulate_wholly_inside<kGradient>(p, r2, inv_norm, from, lanes, lanes_of, views,
+                                            acc)) {
       continue;
     }
-    const bool any_pie = phase_one<kGradient>(p, r2, inv_norm, lanes, ids, views, st);
+    const bool any_pie =
+        phase_one<kGradient>(p, r2, inv_norm, from, lanes, lanes_of, views, st);
     try_lean = try_wholly_inside && !any_pie;
     phase_two<kGradient>(st, base, lanes, any_pie, acc);
   }
@@ -395,14 +408,14 @@ FieldSample TriangleBatch::field(const Vec3& p, double radius) const {
 double TriangleBatch::value(const Vec3& p, double radius, std::span<const uint32_t> subset,
                             bool try_wholly_inside) const {
   Accumulator acc;
-  evaluate<false>(p, radius, subset.size(), Listed{subset.data()}, acc, try_wholly_inside);
+  evaluate<false>(p, radius, subset.size(), subset.data(), acc, try_wholly_inside);
   return acc.value;
 }
 
 FieldSample TriangleBatch::field(const Vec3& p, double radius, std::span<const uint32_t> subset,
                                  bool try_wholly_inside) const {
   Accumulator acc;
-  evaluate<true>(p, radius, subset.size(), Listed{subset.data()}, acc, try_wholly_inside);
+  evaluate<true>(p, radius, subset.size(), subset.data(), acc, try_wholly_inside);
   return {acc.value, acc.gradient};
 }
 

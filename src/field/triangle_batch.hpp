@@ -20,6 +20,7 @@ struct ChunkState;
 
 class TriangleBatch {
  public:
+  static constexpr size_t kSimdWidth = 4;  // doubles in an AVX2 register
   TriangleBatch() = default;
   explicit TriangleBatch(std::span<const Triangle> triangles);
   // Each triangle's field times its weight (a repeated triangle's multiplicity).
@@ -71,23 +72,24 @@ class TriangleBatch {
   template <bool kGradient, class Index>
   void evaluate(const Vec3& p, double radius, size_t count, Index index, Accumulator& acc,
                 bool try_wholly_inside = true) const;
-  // The chunk's loops: `lanes` lanes listed in `ids`, padded to whole SIMD widths.
-  bool corners_within(const Vec3& p, double r2, size_t lanes, const uint64_t* ids,
+  // The chunk's loops, over whole SIMD widths (the lanes past `lanes` masked out).
+  template <class Index>
+  bool corners_within(const Vec3& p, double r2, size_t base, size_t lanes, Index index,
                       const detail::EdgeView* views) const;
-  template <bool kGradient>
-  bool accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm, size_t lanes,
-                                const uint64_t* ids, const detail::EdgeView* views,
+  template <bool kGradient, class Index>
+  bool accumulate_wholly_inside(const Vec3& p, double r2, double inv_norm, size_t base,
+                                size_t lanes, Index index, const detail::EdgeView* views,
                                 Accumulator& acc) const;
   template <bool kGradient>
   void phase_two(const detail::ChunkState& st, size_t base, size_t lanes, bool any_pie,
                  Accumulator& acc) const;
-  template <bool kGradient>
-  bool phase_one(const Vec3& p, double r2, double inv_norm, size_t lanes, const uint64_t* ids,
-                 const detail::EdgeView* views, detail::ChunkState& st) const;
+  template <bool kGradient, class Index>
+  bool phase_one(const Vec3& p, double r2, double inv_norm, size_t base, size_t lanes,
+                 Index index, const detail::EdgeView* views, detail::ChunkState& st) const;
 
   std::vector<double> nx_, ny_, nz_;  // unit normal (zero for zero-area triangles)
   std::vector<double> weight_;        // the triangle's weight (1 unless given), 0 for zero area
-  size_t size_ = 0;                   // the lanes in use (the arrays may hold more)
+  size_t size_ = 0;  // the lanes in use (the arrays hold more: whole SIMD widths at least)
   EdgeArrays edges_[3];
 };
 
