@@ -128,15 +128,6 @@ BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radi
   return {centroid, std::sqrt(centroid_reach2) + radius};
 }
 
-bool may_cross(const Vec3& origin, const Vec3& direction, const BoundingBall& ball) {
-  const Vec3 w = ball.center - origin;
-  const double ww = glm::dot(w, w), along = glm::dot(w, direction);
-  const double r2 = ball.radius * ball.radius;
-  // The squared distance to the line loses up to a few ulps of |w|^2 to cancellation, and the
-  // ball's radius was rounded: the slack covers both many times over.
-  return ww - along * along <= r2 + 1e-12 * (ww + r2);
-}
-
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius) {
   const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};

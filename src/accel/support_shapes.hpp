@@ -37,8 +37,15 @@ BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radi
 // A cheap test that the line may cross a support: it crosses the support's bounding ball
 // (false means the span is empty; a rounding slack keeps every grazing line in). No square
 // root: the Embree callbacks run it on every triangle whose box the line crosses, with the
-// balls made once per mesh.
-bool may_cross(const Vec3& origin, const Vec3& direction, const BoundingBall& ball);
+// balls made once per mesh. Inline: it runs on every candidate of every line query.
+inline bool may_cross(const Vec3& origin, const Vec3& direction, const BoundingBall& ball) {
+  const Vec3 w = ball.center - origin;
+  const double ww = glm::dot(w, w), along = glm::dot(w, direction);
+  const double r2 = ball.radius * ball.radius;
+  // The squared distance to the line loses up to a few ulps of |w|^2 to cancellation, and the
+  // ball's radius was rounded: the slack covers both many times over.
+  return ww - along * along <= r2 + 1e-12 * (ww + r2);
+}
 // Arc swept by a ball (a piece of a torus, not convex): a conservative interval, the ball
 // around the circle's centre of radius (arc radius + R) cut by the slab |height| <= R.
 Span arc_span(const Vec3& origin, const Vec3& direction, const field::Arc& arc, double radius);
