@@ -71,11 +71,23 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
   const size_t first = std::min(first_live(a), n);
   const double* exit = exit_.data();
   double total = 0.0;
-  if (anywhere) {
-    for (size_t k = first; k < n; ++k) total += exit[k] < a ? 0.0 : anywhere_[k];
-    return total;
-  }
   double* bend = bend_.data();  // sized with the table by reset()
+  // Each member's bound lands in bend[] (0 where its support ended before a), and is summed
+  // in the members' order after: the same sum, to the bit, as one term at a time, and no
+  // load inside a select (those became masked loads, vmaskmovpd, 14 % of the loop's time).
+  const auto ordered_sum = [&] {
+    for (size_t k = first; k < n; ++k) total += bend[k];
+    return total;
+  };
+  if (anywhere) {
+    const double* any = anywhere_.data();
+#pragma omp simd
+    for (size_t k = first; k < n; ++k) {
+      const double bound = any[k];
+      bend[k] = exit[k] < a ? 0.0 : bound;
+    }
+    return ordered_sum();
+  }
   // Named pointers: the vectorizer does not see through the members.
   const double *weight = weight_.data(), *radius = radius_.data(), *r2 = r2_.data();
   const double *measure = measure_.data(), *limit = limit_.data(), *triangle = triangle_.data();
@@ -90,10 +102,12 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
     const double own = triangle_down_bend(weight[k], radius[k], r2[k], measure[k], limit[k],
                                           h0[k], h1[k], o00[k], o01[k], o10[k], o11[k], o20[k],
                                           o21[k], lo[k], hi[k], a, b);
-    bend[k] = triangle[k] != 0.0 ? own : any[k];
+    // The ended members masked by a product, not a select: GCC sank a load into the select
+    // and made it masked again. (The bounds are finite and >= 0: times 1 or 0, the same sum.)
+    const double anywhere = any[k], live = exit[k] < a ? 0.0 : 1.0;
+    bend[k] = (triangle[k] != 0.0 ? own : anywhere) * live;
   }
-  for (size_t k = first; k < n; ++k) total += exit[k] < a ? 0.0 : bend[k];
-  return total;
+  return ordered_sum();
 }
 
 }  // namespace convray::implicit
