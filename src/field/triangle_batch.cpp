@@ -370,6 +370,9 @@ void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, b
     std::fill(theta, theta + simd_lanes(lanes), 0.0);
   }
   double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
+  // Each lane's value lands in `scaled` and is copied out after, if asked: a store under a
+  // condition in the loop kept it scalar.
+  double scaled[kChunk];
 #pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
   for (size_t t = 0; t < simd_lanes(lanes); ++t) {  // the repeated lanes' scale is 0
     const double r0sq = st.r0sq[t];
@@ -378,8 +381,8 @@ void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, b
     const double whole = st.o_inside[t] ? 2.0 * kPi : 0.0;
     const double value =
         st.touches[t] ? st.inside[t] + r4 * r0sq * theta[t] : r4 * r0sq * whole;
-    sum += st.scale[t] * value;
-    if (acc.per_triangle && t < lanes) acc.per_triangle[base + t] = st.scale[t] * value;
+    scaled[t] = st.scale[t] * value;
+    sum += scaled[t];
     if constexpr (kGradient) {
       const double inplane = st.touches[t] ? 1.0 : 0.0;
       const double dr0 = st.touches[t] ? st.inside_dr0[t] + 3.0 * r4 * theta[t] : 3.0 * r4 * whole;
@@ -389,6 +392,7 @@ void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, b
       sgz += st.scale[t] * (inplane * st.gz[t] + dn * st.nz[t]);
     }
   }
+  if (acc.per_triangle) std::copy(scaled, scaled + lanes, acc.per_triangle + base);
   acc.value += sum;
   acc.gradient += Vec3(sgx, sgy, sgz);
 }
