@@ -143,7 +143,7 @@ BENCHMARK_CAPTURE(scalar_field, wholly_inside, false);
 BENCHMARK_CAPTURE(scalar_field, clipped, true);
 BENCHMARK_CAPTURE(batch_field, wholly_inside, false);
 BENCHMARK_CAPTURE(batch_field, clipped, true);
-BENCHMARK_CAPTURE(batch_field_listed, wholly_inside, false)->Arg(8)->Arg(9);
+BENCHMARK_CAPTURE(batch_field_listed, wholly_inside, false)->Arg(8)->Arg(9)->Arg(10)->Arg(11)->Arg(12)->Arg(13)->Arg(16);
 BENCHMARK_CAPTURE(batch_field_listed, clipped, true)->Arg(5)->Arg(8)->Arg(9)->Arg(11);
 BENCHMARK_CAPTURE(batch_value_listed, clipped, true)->Arg(3)->Arg(5)->Arg(8)->Arg(11)->Arg(32);
 BENCHMARK(segment_value);
