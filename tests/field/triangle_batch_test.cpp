@@ -90,8 +90,8 @@ TEST(TriangleBatch, SubsetSumsOnlyTheListedTriangles) {
   for (int a = 0; a < 3; ++a) EXPECT_NEAR(got.gradient[a], expected.gradient[a], 1e-12);
 }
 
-// Listed subsets of every length from 1 to 9 (the atan2 loop pads a chunk to whole SIMD
-// widths), with and without the path for wholly inside chunks tried first, match the scalar
+// Listed subsets of every length from 1 to 13 (every loop runs over whole SIMD widths, the
+// last lane repeated and masked out), with and without the path for wholly inside chunks tried first, match the scalar
 // twin: on small triangles near p (wholly inside the sphere at the larger radius, clipped at
 // the smaller), value and gradient alike.
 TEST(TriangleBatch, ListedSubsetsMatchTheScalarTwinWithOrWithoutTheWhollyInsidePath) {
@@ -100,7 +100,7 @@ TEST(TriangleBatch, ListedSubsetsMatchTheScalarTwinWithOrWithoutTheWhollyInsideP
   const TriangleBatch batch(tris);
   std::uniform_int_distribution<uint32_t> pick(0, uint32_t(tris.size() - 1));
   for (double r : {0.4, 3.0}) {
-    for (size_t n = 1; n <= 9; ++n) {
+    for (size_t n = 1; n <= 13; ++n) {
       std::vector<uint32_t> subset;
       for (size_t k = 0; k < n; ++k) subset.push_back(pick(rng));
       std::vector<Triangle> listed;
