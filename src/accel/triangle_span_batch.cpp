@@ -67,27 +67,39 @@ struct Lane {
 }
 
 // Points within R of the edge's line whose projection lies on the edge (support_shapes.cpp's
-// capsule_body_span).
-[[gnu::always_inline]] inline Lane capsule_body(P o, P d, P a, P b, double r2) {
+// capsule_body_span), in two stages: up to the divisions, then from them. The loop runs the
+// first stage for all three edges before the second: each body is a chain of a square root,
+// two divisions and another square root, and one edge after the other the chains did not
+// overlap within the processor's reordering window.
+struct CapsuleStart {
+  P dp, wp;
+  double length, dw, ww, dp2, inv_dp2, inv_dw;
+};
+[[gnu::always_inline]] inline CapsuleStart capsule_start(P o, P d, P a, P b) {
+  CapsuleStart c;
   const P axis = sub(b, a);
-  const double length = std::sqrt(dot(axis, axis));
-  const P u = mul(axis, 1.0 / (length > 0.0 ? length : 1.0));
+  c.length = std::sqrt(dot(axis, axis));
+  const P u = mul(axis, 1.0 / (c.length > 0.0 ? c.length : 1.0));
   const P w = sub(o, a);
-  const double dw = dot(d, u), ww = dot(w, u);
-  const P dp = sub(d, mul(u, dw));
-  const P wp = sub(w, mul(u, ww));
-  const double dp2 = dot(dp, dp);
-  const double inv_dp2 = reciprocal(dp2);
-  const double tc = -dot(wp, dp) * inv_dp2;
-  const P closest = add(wp, mul(dp, tc));
+  c.dw = dot(d, u);
+  c.ww = dot(w, u);
+  c.dp = sub(d, mul(u, c.dw));
+  c.wp = sub(w, mul(u, c.ww));
+  c.dp2 = dot(c.dp, c.dp);
+  c.inv_dp2 = reciprocal(c.dp2);
+  c.inv_dw = reciprocal(c.dw);
+  return c;
+}
+[[gnu::always_inline]] inline Lane capsule_end(const CapsuleStart& c, double r2) {
+  const double tc = -dot(c.wp, c.dp) * c.inv_dp2;
+  const P closest = add(c.wp, mul(c.dp, tc));
   // Parallel to the axis (dp2 = 0): the whole line, or nothing, by its distance to the axis.
-  const double q2 = dp2 > 0.0 ? dot(closest, closest) : dot(wp, wp);
-  const double half = std::sqrt(q2 <= r2 ? (r2 - q2) * inv_dp2 : 0.0);
-  Lane span{dp2 > 0.0 ? tc - half : -kInfinity, dp2 > 0.0 ? tc + half : kInfinity};
-  const double inv_dw = reciprocal(dw);
-  span = clip_at(ww, dw, -ww * inv_dw, span);
-  span = clip_at(length - ww, -dw, (length - ww) * inv_dw, span);
-  const double miss = q2 <= r2 ? length : 0.0;  // 0: too far from the axis, or no edge
+  const double q2 = c.dp2 > 0.0 ? dot(closest, closest) : dot(c.wp, c.wp);
+  const double half = std::sqrt(q2 <= r2 ? (r2 - q2) * c.inv_dp2 : 0.0);
+  Lane span{c.dp2 > 0.0 ? tc - half : -kInfinity, c.dp2 > 0.0 ? tc + half : kInfinity};
+  span = clip_at(c.ww, c.dw, -c.ww * c.inv_dw, span);
+  span = clip_at(c.length - c.ww, -c.dw, (c.length - c.ww) * c.inv_dw, span);
+  const double miss = q2 <= r2 ? c.length : 0.0;  // 0: too far from the axis, or no edge
   return normal({miss > 0.0 ? span.enter : kInfinity, miss > 0.0 ? span.exit : -kInfinity});
 }
 
@@ -149,12 +161,16 @@ void TriangleSpanBatch::compute(const Vec3& origin, const Vec3& direction, doubl
     const P a{ax[k], ay[k], az[k]}, b{bx[k], by[k], bz[k]}, e{cx[k], cy[k], cz[k]};
     Lane span{kInfinity, -kInfinity};
     span = join(prism(o, d, a, b, e, radius), span);
-    span = join(capsule_body(o, d, a, b, r2), span);
-    span = join(capsule_body(o, d, b, e, r2), span);
-    span = join(capsule_body(o, d, e, a, r2), span);
-    span = join(ball(o, d, a, r2), span);
-    span = join(ball(o, d, b, r2), span);
-    span = join(ball(o, d, e, r2), span);
+    const CapsuleStart ab = capsule_start(o, d, a, b), be = capsule_start(o, d, b, e),
+                       ea = capsule_start(o, d, e, a);
+    // The balls' own square roots meanwhile (joined in the scalar twin's order after).
+    const Lane ball_a = ball(o, d, a, r2), ball_b = ball(o, d, b, r2), ball_e = ball(o, d, e, r2);
+    span = join(capsule_end(ab, r2), span);
+    span = join(capsule_end(be, r2), span);
+    span = join(capsule_end(ea, r2), span);
+    span = join(ball_a, span);
+    span = join(ball_b, span);
+    span = join(ball_e, span);
     enter[k] = span.enter;
     exit[k] = span.exit;
   }
