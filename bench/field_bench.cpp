@@ -85,29 +85,28 @@ void batch_field(benchmark::State& state, bool clipped) {
 
 // The window march's calls: a few listed lanes (state.range(0) of a cluster's 32 triangles)
 // per call, as one sample of a ray's cluster evaluates the triangles whose support holds the
-// point; counts that are not a multiple of the SIMD width show the cost of the remainder.
-void batch_field_listed(benchmark::State& state, bool clipped) {
+// point; counts that are not a multiple of the SIMD width show the cost of the padding. With
+// the gradient (a hit's normal), or values only (the bracketing and refining samples, which
+// list clipped triangles only and so skip the wholly-inside path).
+template <bool kGradient>
+void batch_listed(benchmark::State& state, bool clipped) {
   auto tris = make_triangles(clipped);
   tris.resize(32);
   const convray::field::TriangleBatch batch(tris);
   const double r = radius_for(clipped);
   std::vector<uint32_t> lanes;
   for (uint32_t i = 0; i < uint32_t(state.range(0)); ++i) lanes.push_back(i * 32 / uint32_t(state.range(0)));
-  for (auto _ : state) benchmark::DoNotOptimize(batch.field(Vec3(0.0), r, lanes));
+  for (auto _ : state) {
+    if constexpr (kGradient) {
+      benchmark::DoNotOptimize(batch.field(Vec3(0.0), r, lanes));
+    } else {
+      benchmark::DoNotOptimize(batch.value(Vec3(0.0), r, lanes, false));
+    }
+  }
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(lanes.size()));
 }
-
-// The same, values only: the march's bracketing and refining samples.
-void batch_value_listed(benchmark::State& state, bool clipped) {
-  auto tris = make_triangles(clipped);
-  tris.resize(32);
-  const convray::field::TriangleBatch batch(tris);
-  const double r = radius_for(clipped);
-  std::vector<uint32_t> lanes;
-  for (uint32_t i = 0; i < uint32_t(state.range(0)); ++i) lanes.push_back(i * 32 / uint32_t(state.range(0)));
-  for (auto _ : state) benchmark::DoNotOptimize(batch.value(Vec3(0.0), r, lanes, false));
-  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(lanes.size()));
-}
+void batch_field_listed(benchmark::State& state, bool clipped) { batch_listed<true>(state, clipped); }
+void batch_value_listed(benchmark::State& state, bool clipped) { batch_listed<false>(state, clipped); }
 
 std::vector<convray::field::Segment> make_segments() {
   std::mt19937_64 rng(7);
