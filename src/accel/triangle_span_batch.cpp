@@ -128,7 +128,7 @@ void TriangleSpanBatch::gather(std::span<const field::Triangle> triangles,
   const size_t n = ids.size();
   // Whole SIMD widths, the last triangle repeated: compute() then has no scalar remainder,
   // which cost about as much as the vector loop on a line's few candidates.
-  const size_t lanes = (n + kSimdWidth - 1) / kSimdWidth * kSimdWidth;
+  const size_t lanes = whole_simd_widths(n);
   for (auto& vertex : corner_) {
     for (auto& axis : vertex) axis.resize(lanes);
   }

@@ -10,6 +10,7 @@
 
 #include "accel/support_shapes.hpp"
 #include "field/triangle.hpp"
+#include "util/simd_width.hpp"
 
 namespace convray::accel {
 
@@ -26,7 +27,6 @@ class TriangleSpanBatch {
 
  private:
   std::vector<double> corner_[3][3];  // corner_[vertex][axis]
-  static constexpr size_t kSimdWidth = 4;  // doubles in an AVX2 register
   std::vector<double> enter_, exit_;  // rounded up to whole SIMD widths
   size_t size_ = 0;
 };

@@ -34,7 +34,7 @@ void TriangleBatch::assign(std::span<const Triangle> triangles) {
 // mask them out); they hold zeros or an earlier triangle, finite either way.
 void TriangleBatch::resize(size_t n) {
   size_ = n;
-  const size_t padded = (n + kSimdWidth - 1) / kSimdWidth * kSimdWidth;
+  const size_t padded = whole_simd_widths(n);
   for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->resize(padded);
   for (EdgeArrays& e : edges_) {
     for (auto* v : {&e.vx, &e.vy, &e.vz, &e.ux, &e.uy, &e.uz, &e.mx, &e.my, &e.mz, &e.length}) {
@@ -68,11 +68,7 @@ constexpr size_t kChunk = 64;
 // Every loop runs over whole SIMD widths (see Listed below). For the atan2 loop: a chunk of 7
 // lanes otherwise made one AVX2, one SSE and one scalar call of libmvec's and libm's atan2,
 // each about as dear as the 4-wide one (7.5 % of a render of the dragon at R = 1).
-static_assert(kChunk % TriangleBatch::kSimdWidth == 0);
-constexpr size_t simd_lanes(size_t lanes) {
-  return (lanes + TriangleBatch::kSimdWidth - 1) / TriangleBatch::kSimdWidth *
-         TriangleBatch::kSimdWidth;
-}
+static_assert(kChunk % kSimdWidth == 0);
 
 // What phase 1 leaves for each lane of a chunk; phase 2 adds the pie-slice angles.
 struct ChunkState {
@@ -82,7 +78,7 @@ struct ChunkState {
   double pie_y[3][kChunk], pie_x[3][kChunk];  // per edge: θ = atan2(pie_y, pie_x)
   double r0sq[kChunk], h[kChunk], scale[kChunk];
   double nx[kChunk], ny[kChunk], nz[kChunk];
-  int64_t touches[kChunk], o_inside[kChunk];  // 0 or 1 (64-bit: see ChunkLanes)
+  int64_t touches[kChunk], o_inside[kChunk];  // 0 or 1 (64-bit: see Listed below)
 };
 
 // Raw pointers to one edge's arrays, so the vectorizer sees plain strided loads.
@@ -187,7 +183,6 @@ using detail::ChunkState;
 using detail::EdgeTerm;
 using detail::EdgeView;
 using detail::kChunk;
-using detail::simd_lanes;
 
 namespace {
 // The lanes a call sums: all of the batch's in order (the arrays are padded to whole SIMD
@@ -211,7 +206,7 @@ Contiguous chunk_lanes(Contiguous index, size_t, size_t, ListedChunk&) { return 
 // Listed lanes from `list` (32-bit, as callers keep them), the chunk from `base`.
 Listed chunk_lanes(const uint32_t* list, size_t base, size_t lanes, ListedChunk& chunk) {
   for (size_t t = 0; t < lanes; ++t) chunk.ids[t] = list[base + t];
-  for (size_t t = lanes; t < simd_lanes(lanes); ++t) chunk.ids[t] = chunk.ids[lanes - 1];
+  for (size_t t = lanes; t < whole_simd_widths(lanes); ++t) chunk.ids[t] = chunk.ids[lanes - 1];
   return Listed{chunk.ids};
 }
 // Where the chunk's lanes start for its index: listed chunks are copied from 0.
@@ -228,7 +223,7 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];  // locals: contiguous loads
   int64_t any_pie = 0;
 #pragma omp simd reduction(| : any_pie)
-  for (size_t t = 0; t < simd_lanes(lanes); ++t) {
+  for (size_t t = 0; t < whole_simd_widths(lanes); ++t) {
     const size_t i = index(base + t);
     // Every load unconditional: a load under a condition (ws[i] inside the select) needs a
     // masked gather, which GCC does not emulate, and the whole loop then stayed scalar.
@@ -268,7 +263,7 @@ bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t base, size_t
   const EdgeView v0 = views[0], v1 = views[1], v2 = views[2];
   int64_t outside = 0;
 #pragma omp simd reduction(| : outside)
-  for (size_t t = 0; t < simd_lanes(lanes); ++t) {
+  for (size_t t = 0; t < whole_simd_widths(lanes); ++t) {
     const size_t i = index(base + t);
     auto beyond = [&](const EdgeView& v) {
       const double dx = v.vx[i] - p.x, dy = v.vy[i] - p.y, dz = v.vz[i] - p.z;
@@ -292,7 +287,7 @@ bool TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double in
   double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
   int64_t outside = 0;
 #pragma omp simd reduction(+ : sum, sgx, sgy, sgz) reduction(| : outside)
-  for (size_t t = 0; t < simd_lanes(lanes); ++t) {
+  for (size_t t = 0; t < whole_simd_widths(lanes); ++t) {
     const size_t i = index(base + t);
     const double nx = nxs[i], ny = nys[i], nz = nzs[i], weight = ws[i];
     const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
@@ -362,30 +357,33 @@ void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, b
   double theta[kChunk];
   if (any_pie) {
 #pragma omp simd
-    for (size_t t = 0; t < simd_lanes(lanes); ++t) {
+    for (size_t t = 0; t < whole_simd_widths(lanes); ++t) {
       theta[t] = atan2(st.pie_y[0][t], st.pie_x[0][t]) + atan2(st.pie_y[1][t], st.pie_x[1][t]) +
                  atan2(st.pie_y[2][t], st.pie_x[2][t]);
     }
   } else {
-    std::fill(theta, theta + simd_lanes(lanes), 0.0);
+    std::fill(theta, theta + whole_simd_widths(lanes), 0.0);
   }
   double sum = 0.0, sgx = 0.0, sgy = 0.0, sgz = 0.0;
   // Each lane's value lands in `scaled` and is copied out after, if asked: a store under a
   // condition in the loop kept it scalar.
   double scaled[kChunk];
 #pragma omp simd reduction(+ : sum, sgx, sgy, sgz)
-  for (size_t t = 0; t < simd_lanes(lanes); ++t) {  // the repeated lanes' scale is 0
-    const double r0sq = st.r0sq[t];
+  for (size_t t = 0; t < whole_simd_widths(lanes); ++t) {  // the repeated lanes' scale is 0
+    // Every load unconditional (loads inside the selects became masked loads, vmaskmovpd).
+    const double r0sq = st.r0sq[t], inside = st.inside[t], angle = theta[t];
     const double r4 = r0sq * r0sq;
     // No edge reaches the disk: it is wholly inside the triangle or wholly outside.
     const double whole = st.o_inside[t] ? 2.0 * kPi : 0.0;
-    const double value =
-        st.touches[t] ? st.inside[t] + r4 * r0sq * theta[t] : r4 * r0sq * whole;
+    const double value = st.touches[t] ? inside + r4 * r0sq * angle : r4 * r0sq * whole;
     scaled[t] = st.scale[t] * value;
     sum += scaled[t];
     if constexpr (kGradient) {
       const double inplane = st.touches[t] ? 1.0 : 0.0;
-      const double dr0 = st.touches[t] ? st.inside_dr0[t] + 3.0 * r4 * theta[t] : 3.0 * r4 * whole;
+      // A product, not a select: GCC sank the load into a select and masked it again (the
+      // terms are finite: times 1 or 0 and plus 0, the same bits).
+      const double dr0 = inplane * (st.inside_dr0[t] + 3.0 * r4 * angle) +
+                         (1.0 - inplane) * (3.0 * r4 * whole);
       const double dn = -2.0 * st.h[t] * dr0;  // r0^2 = R^2 - h^2 moves with P as -2h n
       sgx += st.scale[t] * (inplane * st.gx[t] + dn * st.nx[t]);
       sgy += st.scale[t] * (inplane * st.gy[t] + dn * st.ny[t]);

@@ -10,6 +10,7 @@
 #include "field/sample.hpp"
 #include "field/triangle.hpp"
 #include "field/triangle_frame.hpp"
+#include "util/simd_width.hpp"
 
 namespace convray::field {
 
@@ -20,7 +21,6 @@ struct ChunkState;
 
 class TriangleBatch {
  public:
-  static constexpr size_t kSimdWidth = 4;  // doubles in an AVX2 register
   TriangleBatch() = default;
   explicit TriangleBatch(std::span<const Triangle> triangles);
   // Each triangle's field times its weight (a repeated triangle's multiplicity).

@@ -2,11 +2,9 @@
 
 #include <algorithm>
 
+#include "util/simd_width.hpp"
+
 namespace convray::implicit {
-namespace {
-constexpr size_t kSimdWidth = 4;  // doubles in an AVX2 register
-size_t whole_widths(size_t n) { return (n + kSimdWidth - 1) / kSimdWidth * kSimdWidth; }
-}  // namespace
 
 // The arrays only grow: resizing them down and up again for every cluster filled the new
 // rows with zeros each time.
@@ -96,7 +94,7 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
   const double *o20 = o20_.data(), *o21 = o21_.data(), *lo = lo_.data(), *hi = hi_.data();
   // Whole SIMD widths (the rows past n are spare: reset() made room): a scalar remainder
   // of up to three rows cost about as much as the vector loop on the march's short tables.
-  const size_t end = first + whole_widths(n - first);
+  const size_t end = first + whole_simd_widths(n - first);
 #pragma omp simd
   for (size_t k = first; k < end; ++k) {
     const double own = triangle_down_bend(weight[k], radius[k], r2[k], measure[k], limit[k],
