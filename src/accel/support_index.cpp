@@ -1,6 +1,7 @@
 #include "accel/support_index.hpp"
 
 #include <embree3/rtcore.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -144,11 +145,10 @@ SupportIndex::SupportIndex(const SupportSources& in) : impl_(std::make_unique<Im
     s.margin = margin;
     m.size += s.count;
     if (s.kind != GeometrySource::Kind::triangle) continue;
-    std::vector<BoundingBall>& balls = m.balls.emplace_back();
-    balls.reserve(s.count);
-    for (uint32_t i = 0; i < s.count; ++i) {
-      balls.push_back(triangle_bounding_ball(s.triangles[i], s.radius(i)));
-    }
+    std::vector<BoundingBall>& balls = m.balls.emplace_back(s.count);
+    tbb::parallel_for(uint32_t(0), s.count, [&](uint32_t i) {
+      balls[i] = triangle_bounding_ball(s.triangles[i], s.radius(i));
+    });
     s.balls = balls.data();
   }
   detail::SceneBuild build;

@@ -1,5 +1,7 @@
 #include "implicit/convolution_surface.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -141,8 +143,9 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
   arc_base = capsule_base + uint32_t(capsules.size());
   triangle_base = arc_base + uint32_t(arcs.size());
   spheres_only = capsules.empty() && arcs.empty() && triangles.empty();
-  frames.reserve(triangles.size());
-  for (const field::Triangle& t : triangles) frames.push_back(field::triangle_frame(t));
+  frames.resize(triangles.size());
+  tbb::parallel_for(size_t(0), triangles.size(),
+                    [&](size_t i) { frames[i] = field::triangle_frame(triangles[i]); });
   for (size_t i = 0; i < sphere_radii.size(); ++i) {
     const double r2 = sphere_radii[i] * sphere_radii[i];
     sphere_weights.push_back(sphere_strengths[i] / (r2 * r2));

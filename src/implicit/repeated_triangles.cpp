@@ -1,5 +1,8 @@
 #include "implicit/repeated_triangles.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -38,9 +41,14 @@ uint64_t hash_of(const Corners& key) {
 
 std::optional<DistinctTriangles> merge_repeated(std::span<const field::Triangle> triangles) {
   const size_t n = triangles.size();
-  std::vector<std::pair<uint64_t, uint32_t>> order(n);  // (hash, index): equal keys adjacent
-  for (size_t i = 0; i < n; ++i) order[i] = {hash_of(canonical(triangles[i])), uint32_t(i)};
-  std::sort(order.begin(), order.end());
+  // (hash, index): equal keys adjacent, the indices ascending within a run (all pairs are
+  // distinct, so the parallel sort's order is the sequential one). On every core: a big
+  // mesh's start-up waits for this.
+  std::vector<std::pair<uint64_t, uint32_t>> order(n);
+  tbb::parallel_for(size_t(0), n, [&](size_t i) {
+    order[i] = {hash_of(canonical(triangles[i])), uint32_t(i)};
+  });
+  tbb::parallel_sort(order.begin(), order.end());
   bool repeats = false;
   // Each triangle's first occurrence: within a run of equal hashes, the earliest equal key.
   std::vector<uint32_t> first(n);
