@@ -91,9 +91,9 @@ TEST(TriangleBatch, SubsetSumsOnlyTheListedTriangles) {
 }
 
 // Listed subsets of every length from 1 to 13 (every loop runs over whole SIMD widths, the
-// last lane repeated and masked out), with and without the path for wholly inside chunks tried first, match the scalar
-// twin: on small triangles near p (wholly inside the sphere at the larger radius, clipped at
-// the smaller), value and gradient alike.
+// last lane repeated and masked out), with and without the path for wholly inside chunks
+// tried first, match the scalar twin: on small triangles near p (wholly inside the sphere at
+// the larger radius, clipped at the smaller), value and gradient alike.
 TEST(TriangleBatch, ListedSubsetsMatchTheScalarTwinWithOrWithoutTheWhollyInsidePath) {
   std::mt19937_64 rng(4);
   const auto tris = random_triangles(rng, 40, 0.15);
