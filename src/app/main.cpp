@@ -19,6 +19,7 @@
 #include "app/command_quick.hpp"
 #include "app/command_step.hpp"
 #include "app/command_view.hpp"
+#include "app/malloc_tunables.hpp"
 #include "app/command_render.hpp"
 #include "app/command_slice.hpp"
 #include "app/render_options.hpp"
@@ -340,6 +341,7 @@ void check_field_options(const convray::app::FieldOptions& o, const CLI::App& fi
 }  // namespace
 
 int main(int argc, char** argv) {
+  convray::app::reexec_with_malloc_tunables(argv);
   // A file-size limit (ulimit -f) then fails the write with EFBIG, which the atomic writer
   // reports and cleans up, instead of killing the process mid-file.
   std::signal(SIGXFSZ, SIG_IGN);
