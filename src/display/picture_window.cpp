@@ -1,9 +1,8 @@
 #include "display/picture_window.hpp"
 
-#include <SDL.h>
-
 #include <cstdlib>
 
+#include "display/sdl_library.hpp"
 #include "display/sdl_setup.hpp"
 #include "display/sdl_window.hpp"
 
@@ -11,43 +10,45 @@ namespace convray::display {
 namespace {
 
 [[noreturn]] void fail(const std::string& what) {
-  throw NoDisplay(what + ": " + SDL_GetError());
+  throw NoDisplay(what + ": " + sdl().SDL_GetError());
 }
 
 }  // namespace
 
 PictureWindow::PictureWindow(const std::string& title, PreviewSize size) : size_(size) {
   prepare_sdl_video();
-  if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
+  if (sdl().SDL_InitSubSystem(SDL_INIT_VIDEO) != 0) {
     const char* display = std::getenv("DISPLAY");
     fail(display ? "DISPLAY=" + std::string(display) : "SDL_Init");
   }
   sdl_.video = true;
-  sdl_.window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
+  sdl_.window =
+      sdl().SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_UNDEFINED, SDL_WINDOWPOS_UNDEFINED,
                              size.width, size.height, SDL_WINDOW_SHOWN);
   if (!sdl_.window) fail("SDL_CreateWindow");
   // The software renderer copies our bytes to the window as they are: the picture on screen
   // is the file's, with no GPU, driver or colour management in between.
-  sdl_.renderer = SDL_CreateRenderer(sdl_.window, -1, SDL_RENDERER_SOFTWARE);
+  sdl_.renderer = sdl().SDL_CreateRenderer(sdl_.window, -1, SDL_RENDERER_SOFTWARE);
   if (!sdl_.renderer) fail("SDL_CreateRenderer");
-  sdl_.texture = SDL_CreateTexture(sdl_.renderer, SDL_PIXELFORMAT_RGB24,
-                                   SDL_TEXTUREACCESS_STREAMING, size.width, size.height);
+  sdl_.texture = sdl().SDL_CreateTexture(sdl_.renderer, SDL_PIXELFORMAT_RGB24,
+                                         SDL_TEXTUREACCESS_STREAMING, size.width, size.height);
   if (!sdl_.texture) fail("SDL_CreateTexture");
-  SDL_SetRenderDrawColor(sdl_.renderer, 0, 0, 0, 255);
-  SDL_RenderClear(sdl_.renderer);
-  SDL_RenderPresent(sdl_.renderer);
+  sdl().SDL_SetRenderDrawColor(sdl_.renderer, 0, 0, 0, 255);
+  sdl().SDL_RenderClear(sdl_.renderer);
+  sdl().SDL_RenderPresent(sdl_.renderer);
 }
 
 PictureWindow::Handles::~Handles() {
-  if (texture) SDL_DestroyTexture(texture);
-  if (renderer) SDL_DestroyRenderer(renderer);
-  if (window) SDL_DestroyWindow(window);
-  if (video) SDL_QuitSubSystem(SDL_INIT_VIDEO);
-  SDL_Quit();
+  if (!sdl_loaded()) return;  // SDL2 could not be loaded: nothing was opened
+  if (texture) sdl().SDL_DestroyTexture(texture);
+  if (renderer) sdl().SDL_DestroyRenderer(renderer);
+  if (window) sdl().SDL_DestroyWindow(window);
+  if (video) sdl().SDL_QuitSubSystem(SDL_INIT_VIDEO);
+  sdl().SDL_Quit();
 }
 
 std::string PictureWindow::driver() const {
-  const char* name = SDL_GetCurrentVideoDriver();
+  const char* name = sdl().SDL_GetCurrentVideoDriver();
   return name ? name : "";
 }
 
@@ -57,16 +58,18 @@ bool PictureWindow::unseen() const {
 }
 
 void PictureWindow::set_title(const std::string& title) {
-  SDL_SetWindowTitle(sdl_.window, title.c_str());
+  sdl().SDL_SetWindowTitle(sdl_.window, title.c_str());
 }
 
 void PictureWindow::draw(const std::vector<uint8_t>& levels) {
-  SDL_UpdateTexture(sdl_.texture, nullptr, levels.data(), 3 * size_.width);
+  sdl().SDL_UpdateTexture(sdl_.texture, nullptr, levels.data(), 3 * size_.width);
   redraw();
 }
 
-void PictureWindow::redraw() { SDL_RenderCopy(sdl_.renderer, sdl_.texture, nullptr, nullptr); }
+void PictureWindow::redraw() {
+  sdl().SDL_RenderCopy(sdl_.renderer, sdl_.texture, nullptr, nullptr);
+}
 
-void PictureWindow::present() { SDL_RenderPresent(sdl_.renderer); }
+void PictureWindow::present() { sdl().SDL_RenderPresent(sdl_.renderer); }
 
 }  // namespace convray::display

@@ -1,9 +1,8 @@
 #include "display/sdl_setup.hpp"
 
-#include <SDL.h>
-
 #include <cstdlib>
 
+#include "display/sdl_library.hpp"
 #include "display/sdl_window.hpp"
 
 namespace convray::display {
@@ -20,26 +19,28 @@ bool environment_set(const char* variable) {
 // X11's reason, not after a detour through Wayland that complains on standard error.
 namespace {
 
-void choose_a_driver() {
-  if (environment_set("SDL_VIDEODRIVER")) return;
+// The drivers to try, or nullptr for SDL_VIDEODRIVER's; asked before SDL is loaded, so a
+// batch render without a display never loads it.
+const char* drivers_to_try() {
+  if (environment_set("SDL_VIDEODRIVER")) return nullptr;
   if (!environment_set("DISPLAY") && !environment_set("WAYLAND_DISPLAY")) {
     throw NoDisplay("neither DISPLAY nor WAYLAND_DISPLAY is set");
   }
-  const char* drivers = !environment_set("WAYLAND_DISPLAY") ? "x11"
-                        : environment_set("DISPLAY")        ? "wayland,x11"
-                                                            : "wayland";
-  SDL_SetHint(SDL_HINT_VIDEODRIVER, drivers);
+  return !environment_set("WAYLAND_DISPLAY") ? "x11"
+         : environment_set("DISPLAY")        ? "wayland,x11"
+                                             : "wayland";
 }
 
 }  // namespace
 
 void prepare_sdl_video() {
+  const char* drivers = drivers_to_try();
   // Ctrl-C must stay convray's: SDL would turn SIGINT and SIGTERM into a quit event, and the
   // handler that removes unfinished files (util/partial_files) would never run.
-  SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+  sdl().SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
   // A window of ours is no reason to keep the screen saver away.
-  SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
-  choose_a_driver();
+  sdl().SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
+  if (drivers) sdl().SDL_SetHint(SDL_HINT_VIDEODRIVER, drivers);
 }
 
 }  // namespace convray::display

@@ -1,10 +1,9 @@
 #include "display/sdl_window.hpp"
 
-#include <SDL.h>
-
 #include <algorithm>
 
 #include "display/picture_window.hpp"
+#include "display/sdl_library.hpp"
 #include "display/sdl_setup.hpp"
 
 namespace convray::display {
@@ -32,7 +31,7 @@ void SdlWindow::show(const std::vector<uint8_t>& levels) {
 WindowEvent SdlWindow::wait(int milliseconds) {
   WindowEvent said = WindowEvent::none;
   SDL_Event event;
-  bool any = SDL_WaitEventTimeout(&event, milliseconds) != 0;
+  bool any = sdl().SDL_WaitEventTimeout(&event, milliseconds) != 0;
   while (any) {
     if (event.type == SDL_QUIT ||
         (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE)) {
@@ -45,7 +44,7 @@ WindowEvent SdlWindow::wait(int milliseconds) {
       picture_->redraw();
       picture_->present();
     }
-    any = SDL_PollEvent(&event) != 0;
+    any = sdl().SDL_PollEvent(&event) != 0;
   }
   return said;
 }

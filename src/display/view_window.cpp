@@ -1,12 +1,10 @@
 #include "display/view_window.hpp"
 
-#include <SDL.h>
-#include <SDL_ttf.h>
-
 #include <algorithm>
 #include <filesystem>
 
 #include "display/picture_window.hpp"
+#include "display/sdl_library.hpp"
 
 namespace convray::display {
 
@@ -17,8 +15,8 @@ struct ViewWindow::Handles {
   bool ttf = false;
 
   ~Handles() {
-    if (font) TTF_CloseFont(font);
-    if (ttf) TTF_Quit();
+    if (font) sdl().TTF_CloseFont(font);
+    if (ttf) sdl().TTF_Quit();
   }
 };
 
@@ -38,11 +36,11 @@ ViewWindow::ViewWindow(const std::string& title, PreviewSize size, const std::st
                  "installs it)");
   }
   sdl_->picture = std::make_unique<PictureWindow>(title, size);
-  if (TTF_Init() != 0) throw NoFont(std::string("SDL2_ttf: ") + TTF_GetError());
+  if (sdl().TTF_Init() != 0) throw NoFont(std::string("SDL2_ttf: ") + sdl().SDL_GetError());
   sdl_->ttf = true;
-  sdl_->font = TTF_OpenFont(font.c_str(), kFontPoints);
-  if (!sdl_->font) throw NoFont("cannot open the font " + font + ": " + TTF_GetError());
-  SDL_SetRenderDrawBlendMode(sdl_->picture->renderer(), SDL_BLENDMODE_BLEND);
+  sdl_->font = sdl().TTF_OpenFont(font.c_str(), kFontPoints);
+  if (!sdl_->font) throw NoFont("cannot open the font " + font + ": " + sdl().SDL_GetError());
+  sdl().SDL_SetRenderDrawBlendMode(sdl_->picture->renderer(), SDL_BLENDMODE_BLEND);
 }
 
 ViewWindow::~ViewWindow() = default;
@@ -57,30 +55,30 @@ void ViewWindow::set_title(const std::string& title) { sdl_->picture->set_title(
 void ViewWindow::draw_text(const std::string& text, int x, int y, bool error) {
   if (text.empty()) return;
   const SDL_Color colour = error ? SDL_Color{255, 110, 100, 255} : SDL_Color{235, 235, 235, 255};
-  SDL_Surface* surface = TTF_RenderUTF8_Blended(sdl_->font, text.c_str(), colour);
+  SDL_Surface* surface = sdl().TTF_RenderUTF8_Blended(sdl_->font, text.c_str(), colour);
   if (!surface) return;  // a line SDL2_ttf cannot set is left out, not fatal
   SDL_Renderer* renderer = sdl_->picture->renderer();
-  SDL_Texture* texture = SDL_CreateTextureFromSurface(renderer, surface);
+  SDL_Texture* texture = sdl().SDL_CreateTextureFromSurface(renderer, surface);
   const SDL_Rect band{x - 3, y, surface->w + 6, surface->h};
   const SDL_Rect at{x, y, surface->w, surface->h};
-  SDL_FreeSurface(surface);
+  sdl().SDL_FreeSurface(surface);
   if (!texture) return;
-  SDL_SetRenderDrawColor(renderer, 0, 0, 0, 170);
-  SDL_RenderFillRect(renderer, &band);
-  SDL_RenderCopy(renderer, texture, nullptr, &at);
-  SDL_DestroyTexture(texture);
+  sdl().SDL_SetRenderDrawColor(renderer, 0, 0, 0, 170);
+  sdl().SDL_RenderFillRect(renderer, &band);
+  sdl().SDL_RenderCopy(renderer, texture, nullptr, &at);
+  sdl().SDL_DestroyTexture(texture);
 }
 
 void ViewWindow::show(const std::vector<uint8_t>& levels, const Overlay& overlay) {
   sdl_->picture->draw(levels);
-  const int line = TTF_FontLineSkip(sdl_->font);
+  const int line = sdl().TTF_FontLineSkip(sdl_->font);
   int y = 4;
   for (const std::string& text : overlay.lines) draw_text(text, 6, y, false), y += line;
   // The error wraps (monospace: a fixed number of characters a line), its last line at the
   // bottom, so that a long path does not push the message out of the window; three lines at
   // most, so that the picture stays in view (the terminal has all of it).
   int advance = 8;
-  TTF_GlyphMetrics(sdl_->font, 'M', nullptr, nullptr, nullptr, nullptr, &advance);
+  sdl().TTF_GlyphMetrics(sdl_->font, 'M', nullptr, nullptr, nullptr, nullptr, &advance);
   const size_t columns = size_t(std::max(10, (size_.width - 12) / std::max(1, advance)));
   const std::string& error = overlay.error;
   const size_t rows = std::min<size_t>(3, (error.size() + columns - 1) / columns);
@@ -94,10 +92,10 @@ void ViewWindow::show(const std::vector<uint8_t>& levels, const Overlay& overlay
 std::vector<ViewEvent> ViewWindow::events(int milliseconds) {
   std::vector<ViewEvent> out;
   SDL_Event e;
-  bool any = SDL_WaitEventTimeout(&e, milliseconds) != 0;
-  for (; any; any = SDL_PollEvent(&e) != 0) {
+  bool any = sdl().SDL_WaitEventTimeout(&e, milliseconds) != 0;
+  for (; any; any = sdl().SDL_PollEvent(&e) != 0) {
     ViewEvent v;
-    SDL_GetMouseState(&v.x, &v.y);
+    sdl().SDL_GetMouseState(&v.x, &v.y);
     if (e.type == SDL_QUIT ||
         (e.type == SDL_WINDOWEVENT && e.window.event == SDL_WINDOWEVENT_CLOSE)) {
       out.push_back(v);  // Kind::quit
@@ -110,7 +108,7 @@ std::vector<ViewEvent> ViewWindow::events(int milliseconds) {
       const SDL_Keycode k = e.key.keysym.sym;
       if (k >= 32 && k < 127) continue;  // typed: SDL_TEXTINPUT says which character
       v.kind = ViewEvent::Kind::key;
-      v.name = SDL_GetKeyName(k);
+      v.name = sdl().SDL_GetKeyName(k);
       out.push_back(v);
     } else if (e.type == SDL_MOUSEBUTTONDOWN) {
       dragging_ = true, drag_button_ = e.button.button;
