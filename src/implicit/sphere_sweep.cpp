@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/polynomial_roots.hpp"
+#include "implicit/entry_order.hpp"
 #include "implicit/insertion_sort.hpp"
 #include "implicit/quartic.hpp"
 #include "implicit/surface_impl.hpp"
@@ -181,7 +182,7 @@ void SphereSweep::run(std::span<accel::SupportInterval> supports, double tmin, d
   if (supports.size() <= kInsertionSortLimit) {
     insertion_sort(supports, earlier);
   } else {
-    std::sort(supports.begin(), supports.end(), earlier);
+    sort_by_entry(supports);
   }
   active_.clear();
   reach_ = 0.0;

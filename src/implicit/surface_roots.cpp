@@ -7,6 +7,7 @@
 #include "core/bracket_refine.hpp"
 #include "field/triangle_batch.hpp"
 #include "implicit/bezier_clip.hpp"
+#include "implicit/entry_order.hpp"
 #include "implicit/interval_fit.hpp"
 #include "core/box.hpp"
 #include "implicit/sphere_sweep.hpp"
@@ -325,8 +326,7 @@ bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepReque
     sweep_spheres(surface, request, intervals, tmin, tmax, out, stats);
     return out.size() > found;
   }
-  std::sort(intervals.begin(), intervals.end(),
-            [](const auto& a, const auto& b) { return a.enter < b.enter; });
+  sort_by_entry(intervals);
   RayTracer tracer(surface, ray, stats);
   // Clusters of overlapping supports: between them the field is zero, below T > 0.
   size_t begin = 0;
