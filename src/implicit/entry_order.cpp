@@ -10,9 +10,11 @@
 namespace convray::implicit {
 namespace {
 
-bool earlier(const accel::SupportInterval& a, const accel::SupportInterval& b) {
+// A function object, not a function: passed by pointer, each comparison was a call (2 % of
+// the render at R = 5).
+constexpr auto earlier = [](const accel::SupportInterval& a, const accel::SupportInterval& b) {
   return a.enter < b.enter;
-}
+};
 
 // Below this many, insertion sort on the intervals themselves is as quick.
 constexpr size_t kFewSupports = 16;
