@@ -29,5 +29,9 @@ struct LineQuartic {
 // `radius` of that point.
 LineQuartic triangle_line_quartic(const Triangle& triangle, const Vec3& origin,
                                   const Vec3& direction, double radius);
+// The same, given the triangle's area as triangle_frame computes it (the same bits): the
+// window march has it at hand, and its square root was a fifth of this function's time.
+LineQuartic triangle_line_quartic(const Triangle& triangle, double area, const Vec3& origin,
+                                  const Vec3& direction, double radius);
 
 }  // namespace convray::field

@@ -236,9 +236,10 @@ field::FieldSample ClusterField::evaluate(double t) {
       const bool wholly_inside = b.inside_enter[lane] <= t && t <= b.inside_exit[lane];
       if (kWant == Want::value && wholly_inside) {
         if (!b.has_quartic[lane]) {
-          b.quartics[lane] = field::triangle_line_quartic(s_.triangles[b.triangles[lane]],
-                                                          ray_.at(origin_t_), ray_.direction,
-                                                          b.group->radius);
+          const uint32_t triangle = b.triangles[lane];
+          b.quartics[lane] = field::triangle_line_quartic(
+              s_.triangles[triangle], s_.frames[triangle].area, ray_.at(origin_t_),
+              ray_.direction, b.group->radius);
           b.has_quartic[lane] = 1;
         }
         inside.add(b.quartics[lane], 1.0);
