@@ -25,6 +25,7 @@ constexpr const char* kTunables =
 void reexec_with_malloc_tunables(char** argv) {
 #if defined(__GLIBC__) && __GLIBC_PREREQ(2, 35)  // glibc.malloc.hugetlb is 2.35's
   if (getauxval(AT_SECURE)) return;  // the loader ignores tunables there
+  if (!argv || !argv[0]) return;      // started without even a program name: leave it be
   const char* before = std::getenv("GLIBC_TUNABLES");
   if (before && std::strstr(before, "glibc.malloc.hugetlb")) return;
   const std::string saved = before ? before : "";
