@@ -150,6 +150,35 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
   line->out->push_back({source->first_id + args->primID, s.enter, s.exit});
 }
 
+// The candidates of each source together, sources in address order, each one's in the order
+// found: what std::stable_sort by source gives, without its buffer (an allocation per line,
+// 1 % of the dragon at R = 5, whose repeated triangles make a second source). Lines meet few
+// sources (a mesh's groups of repeated triangles, a union's meshes): each is gathered in one
+// pass; past kFewSources, the stable sort.
+template <class BySource>
+void group_by_source(std::vector<TriangleCandidate>& candidates, BySource by_source) {
+  constexpr size_t kFewSources = 8;
+  thread_local std::vector<const GeometrySource*> sources;
+  thread_local std::vector<TriangleCandidate> grouped;
+  sources.clear();
+  for (const TriangleCandidate& c : candidates) {
+    if (std::find(sources.begin(), sources.end(), c.source) != sources.end()) continue;
+    if (sources.size() == kFewSources) {
+      std::stable_sort(candidates.begin(), candidates.end(), by_source);
+      return;
+    }
+    sources.push_back(c.source);
+  }
+  std::sort(sources.begin(), sources.end(), std::less<const GeometrySource*>());
+  grouped.clear();
+  for (const GeometrySource* source : sources) {
+    for (const TriangleCandidate& c : candidates) {
+      if (c.source == source) grouped.push_back(c);
+    }
+  }
+  std::copy(grouped.begin(), grouped.end(), candidates.begin());
+}
+
 // The exact spans of the triangle candidates, a run of one source at a time through the SIMD
 // batch (the same answers as GeometrySource::span, which tests compare it with).
 void span_triangles(const LineContext& line, std::vector<TriangleCandidate>& candidates) {
@@ -161,7 +190,7 @@ void span_triangles(const LineContext& line, std::vector<TriangleCandidate>& can
   // Most lines meet one mesh only: then the candidates are in order already, and a stable
   // sort would still allocate its buffer and merge (3 % of a render of the soup).
   if (!std::is_sorted(candidates.begin(), candidates.end(), by_source)) {
-    std::stable_sort(candidates.begin(), candidates.end(), by_source);
+    group_by_source(candidates, by_source);
   }
   for (size_t begin = 0; begin < candidates.size();) {
     const GeometrySource& source = *candidates[begin].source;
