@@ -1,10 +1,12 @@
 #include "implicit/surface_roots.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 #include "core/bracket_refine.hpp"
+#include "core/coherent_rays.hpp"
 #include "field/triangle_batch.hpp"
 #include "implicit/bezier_clip.hpp"
 #include "implicit/entry_order.hpp"
@@ -20,6 +22,16 @@ namespace {
 // A first-root search gathers this fraction of the ray's way through the bounds first, and
 // twice as much each time it finds nothing (see find_roots).
 constexpr double kFirstChunk = 0.125;
+// A first hit that wants its normal (a camera's ray, mostly) and passes within
+// kHintReach shortest chunks of the last such hit of its run (core/coherent_rays.hpp) ends
+// its first chunk kHintMargin shortest chunks past that point's depth along it, and gathers
+// at least kHintShortest of them: only the supports up to about the hit, where the fixed
+// fraction gathered those behind it as well (the dragon at R = 5: 155 supports a camera ray
+// that hits, 105 with the hint). Margins of 0, 0.1 and 0.25 chunks: 1.06, 0.90 and 0.92 of
+// the render's time at R = 5 (a chunk that ends before the hit pays a second query).
+constexpr double kHintReach = 1.0;
+constexpr double kHintMargin = 0.1;
+constexpr double kHintShortest = 0.5;
 
 struct FitPiece {
   double t0, t1;
@@ -355,12 +367,60 @@ bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepReque
   return false;
 }
 
+// Where the last first hit with a normal met each surface, in this thread's run of coherent
+// rays: a few surfaces at a time (a scene's camera rays meet several, one after the other).
+class HitHints {
+ public:
+  // The point, if `surface` was hit by an earlier ray of this run.
+  static const Vec3* find(const ConvolutionSurface::Impl& surface) {
+    for (Hint& h : hints_) {
+      if (h.surface == &surface && h.run == coherent_run()) return &h.point;
+    }
+    return nullptr;
+  }
+  static void remember(const ConvolutionSurface::Impl& surface, const Vec3& point) {
+    Hint* slot = nullptr;
+    for (Hint& h : hints_) {
+      if (h.surface == &surface) slot = &h;
+    }
+    if (!slot) slot = &hints_[next_++ % hints_.size()];
+    *slot = {&surface, coherent_run(), point};
+  }
+
+ private:
+  struct Hint {
+    const ConvolutionSurface::Impl* surface = nullptr;
+    uint64_t run = 0;
+    Vec3 point;
+  };
+  static thread_local std::array<Hint, 4> hints_;
+  static thread_local unsigned next_;
+};
+
+thread_local std::array<HitHints::Hint, 4> HitHints::hints_;
+thread_local unsigned HitHints::next_ = 0;
+
+// The first chunk's length from the last hit of the run where the ray passes near it, else
+// `length`.
+double hinted_first_chunk(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin,
+                          double length) {
+  const Vec3* point = HitHints::find(surface);
+  if (!point) return length;
+  const Vec3 w = *point - ray.origin;
+  const double along = glm::dot(w, ray.direction);
+  const double reach = kHintReach * surface.min_chunk;
+  if (!(glm::dot(w, w) - along * along <= reach * reach)) return length;
+  return std::max(along + kHintMargin * surface.min_chunk - tmin,
+                  kHintShortest * surface.min_chunk);
+}
+
 }  // namespace
 
 // A search for the first root gathers the ray in growing chunks, front to back, where lines
 // cross many supports (Impl::gather_in_chunks): most rays that hit stop in the first chunks,
 // and never pay for the supports behind the hit. Each chunk is solved on its own, from every
-// support that crosses it.
+// support that crosses it. A first hit with a normal that passes near the last one of its run
+// ends its first chunk just past that hit's depth (hinted_first_chunk).
 void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
                 RootMode mode, std::vector<double>& out, TraceStats& stats,
                 std::optional<Vec3>* first_gradient) {
@@ -376,11 +436,15 @@ void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double 
   const Box3 grown{bounds.lo - Vec3(slack), bounds.hi + Vec3(slack)};
   if (!clip_to_box(ray, grown, tmin, tmax)) return;
   double length = std::max(kFirstChunk * (tmax - tmin), surface.min_chunk);
+  const bool hinted = mode == RootMode::first && first_gradient;
+  if (hinted) length = hinted_first_chunk(surface, ray, tmin, length);
+  const size_t found = out.size();
   for (double t0 = tmin;; length *= 2.0) {
     const double t1 = tmax - t0 > 1.5 * length ? t0 + length : tmax;
-    if (solve_range(surface, request, t0, t1, out, stats) || t1 >= tmax) return;
+    if (solve_range(surface, request, t0, t1, out, stats) || t1 >= tmax) break;
     t0 = t1;
   }
+  if (hinted && out.size() > found) HitHints::remember(surface, ray.at(out[found]));
 }
 
 }  // namespace convray::implicit

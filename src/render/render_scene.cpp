@@ -11,6 +11,7 @@
 
 #include "render/antialias.hpp"
 #include "render/integrator.hpp"
+#include "core/coherent_rays.hpp"
 #include "core/progress.hpp"
 #include "render/scene_camera.hpp"
 
@@ -20,7 +21,9 @@ namespace {
 
 // Runs `work(tile, stats)` on every tile of `area` (tiles of tile_size pixels from its corner)
 // over TBB's threads, with per-thread statistics summed into `total` at the end (integer sums:
-// order-independent). A pixel's value does not depend on its tile, so any area may be tiled.
+// order-independent). A pixel's value does not depend on its tile beyond the last bits of a
+// root (each tile is a new run of coherent rays: core/coherent_rays.hpp), so any area may be
+// tiled.
 template <typename Work>
 void for_each_tile(const PixelWindow& area, int tile_size, RenderStats& total, Work&& work) {
   if (area.empty()) return;
@@ -35,6 +38,7 @@ void for_each_tile(const PixelWindow& area, int tile_size, RenderStats& total, W
         const int x0 = area.x0 + tx * tile_size, y0 = area.y0 + ty * tile_size;
         const PixelWindow tile{x0, y0, std::min(x0 + tile_size, area.x1),
                                std::min(y0 + tile_size, area.y1)};
+        begin_coherent_rays();  // hints stay within the tile (core/coherent_rays.hpp)
         work(tile, stats);
       }
     }
