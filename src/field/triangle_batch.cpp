@@ -34,7 +34,9 @@ void TriangleBatch::assign(std::span<const Triangle> triangles) {
 // mask them out); they hold zeros or an earlier triangle, finite either way.
 void TriangleBatch::resize(size_t n) {
   size_ = n;
-  const size_t padded = whole_simd_widths(n);
+  // One more width: a range of lanes may start anywhere (value_of_range) and is read in
+  // whole widths from there.
+  const size_t padded = whole_simd_widths(n) + kSimdWidth;
   for (auto* v : {&nx_, &ny_, &nz_, &weight_}) v->resize(padded);
   for (EdgeArrays& e : edges_) {
     for (auto* v : {&e.vx, &e.vy, &e.vz, &e.ux, &e.uy, &e.uz, &e.mx, &e.my, &e.mz, &e.length}) {
@@ -192,17 +194,29 @@ namespace {
 // cost about as much as the vector loop on the window march's few lanes per chunk. The lists
 // and flags are 64-bit: a 32-bit type in a loop made GCC pick 8 lanes, and run any chunk of
 // fewer than 8 scalar.
+// `weight(i)`: what the lane's weight is multiplied by in this call (1, or a range's mask).
 struct Contiguous {
   size_t operator()(size_t t) const { return t; }
+  double weight(size_t) const { return 1.0; }
 };
 struct Listed {
   const uint64_t* list;
   size_t operator()(size_t t) const { return list[t]; }
+  double weight(size_t) const { return 1.0; }
+};
+// A range of lanes read in place, each counted or not by its mask (1 or 0): plain loads
+// where a list needs a gather per array (vgatherqpd: about half the time of a listed chunk).
+struct Masked {
+  const double* mask;  // indexed by lane
+  size_t first;
+  size_t operator()(size_t t) const { return t; }
+  double weight(size_t i) const { return mask[i]; }
 };
 struct ListedChunk {
   uint64_t ids[kChunk];
 };
 Contiguous chunk_lanes(Contiguous index, size_t, size_t, ListedChunk&) { return index; }
+Masked chunk_lanes(Masked index, size_t, size_t, ListedChunk&) { return index; }
 // Listed lanes from `list` (32-bit, as callers keep them), the chunk from `base`.
 Listed chunk_lanes(const uint32_t* list, size_t base, size_t lanes, ListedChunk& chunk) {
   for (size_t t = 0; t < lanes; ++t) chunk.ids[t] = list[base + t];
@@ -211,6 +225,7 @@ Listed chunk_lanes(const uint32_t* list, size_t base, size_t lanes, ListedChunk&
 }
 // Where the chunk's lanes start for its index: listed chunks are copied from 0.
 size_t chunk_base(Contiguous, size_t base) { return base; }
+size_t chunk_base(Masked index, size_t base) { return index.first + base; }
 size_t chunk_base(const uint32_t*, size_t) { return 0; }
 }  // namespace
 
@@ -227,7 +242,7 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
     const size_t i = index(base + t);
     // Every load unconditional: a load under a condition (ws[i] inside the select) needs a
     // masked gather, which GCC does not emulate, and the whole loop then stayed scalar.
-    const double nx = nxs[i], ny = nys[i], nz = nzs[i], weight = ws[i];
+    const double nx = nxs[i], ny = nys[i], nz = nzs[i], weight = ws[i] * index.weight(i);
     const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
     const double r0sq_raw = r2 - h * h;
     const bool in_range = r0sq_raw > 0.0;
@@ -248,7 +263,8 @@ bool TriangleBatch::phase_one(const Vec3& p, double r2, double inv_norm, size_t 
     st.scale[t] = in_range && t < lanes ? weight * inv_norm : 0.0;
     st.touches[t] = e0.touches | e1.touches | e2.touches;
     st.o_inside[t] = !(e0.o_outside | e1.o_outside | e2.o_outside);
-    any_pie |= int64_t(in_range) & st.touches[t] &
+    // Lanes that count only: a masked one need not cost the atan2 pass.
+    any_pie |= int64_t(in_range) & int64_t(weight != 0.0) & int64_t(t < lanes) & st.touches[t] &
                (int64_t(e0.pie_y != 0.0) | int64_t(e1.pie_y != 0.0) | int64_t(e2.pie_y != 0.0));
   }
   return any_pie != 0;
@@ -269,7 +285,8 @@ bool TriangleBatch::corners_within(const Vec3& p, double r2, size_t base, size_t
       const double dx = v.vx[i] - p.x, dy = v.vy[i] - p.y, dz = v.vz[i] - p.z;
       return int64_t(dx * dx + dy * dy + dz * dz >= r2);
     };
-    outside |= int64_t(t < lanes) & (beyond(v0) | beyond(v1) | beyond(v2));
+    outside |= int64_t(t < lanes) & int64_t(index.weight(i) != 0.0) &
+               (beyond(v0) | beyond(v1) | beyond(v2));
   }
   return outside == 0;
 }
@@ -289,13 +306,13 @@ bool TriangleBatch::accumulate_wholly_inside(const Vec3& p, double r2, double in
 #pragma omp simd reduction(+ : sum, sgx, sgy, sgz) reduction(| : outside)
   for (size_t t = 0; t < whole_simd_widths(lanes); ++t) {
     const size_t i = index(base + t);
-    const double nx = nxs[i], ny = nys[i], nz = nzs[i], weight = ws[i];
+    const double nx = nxs[i], ny = nys[i], nz = nzs[i], weight = ws[i] * index.weight(i);
     const double h = (p.x - v0.vx[i]) * nx + (p.y - v0.vy[i]) * ny + (p.z - v0.vz[i]) * nz;
     const double r0sq = r2 - h * h;
     const EdgeTerm e0 = detail::edge_term<kGradient, true>(v0, i, p, r0sq, 0.0);
     const EdgeTerm e1 = detail::edge_term<kGradient, true>(v1, i, p, r0sq, 0.0);
     const EdgeTerm e2 = detail::edge_term<kGradient, true>(v2, i, p, r0sq, 0.0);
-    outside |= int64_t(t < lanes) & (int64_t(e0.corner_dist2 >= r2) |
+    outside |= int64_t(t < lanes) & int64_t(weight != 0.0) & (int64_t(e0.corner_dist2 >= r2) |
                                      int64_t(e1.corner_dist2 >= r2) |
                                      int64_t(e2.corner_dist2 >= r2));
     // The weight: a repeated triangle's multiplicity (a zero-area lane has all-zero edge
@@ -419,6 +436,13 @@ FieldSample TriangleBatch::field(const Vec3& p, double radius, std::span<const u
   Accumulator acc;
   evaluate<true>(p, radius, subset.size(), subset.data(), acc, try_wholly_inside);
   return {acc.value, acc.gradient};
+}
+
+double TriangleBatch::value_of_range(const Vec3& p, double radius, size_t first, size_t count,
+                                     const double* mask, bool try_wholly_inside) const {
+  Accumulator acc;
+  evaluate<false>(p, radius, count, Masked{mask, first}, acc, try_wholly_inside);
+  return acc.value;
 }
 
 void TriangleBatch::values(const Vec3& p, double radius, std::span<double> out) const {

@@ -36,7 +36,7 @@ class TriangleBatch {
   // The arrays only ever grow here: shrinking and growing them again for every cluster
   // filled the new lanes with zeros each time (1.6 % of a render's instructions).
   void resize_unset(size_t n) {
-    if (n > weight_.size()) resize(n);
+    if (n + kSimdWidth > weight_.size()) resize(n);  // room for value_of_range's widths
     size_ = n;
   }
   // Lane i holds `triangle`, whose frame is `frame` (triangle_frame(triangle), computed once
@@ -54,6 +54,13 @@ class TriangleBatch {
                bool try_wholly_inside = true) const;
   FieldSample field(const Vec3& p, double radius, std::span<const uint32_t> subset,
                     bool try_wholly_inside = true) const;
+
+  // The lanes [first, first + count) in place, lane i counted mask[i] (0 or 1) times: the
+  // listed lanes' sum where they lie close together, without the gathers a list needs. Every
+  // lane of the range holds a triangle (set_lane, or any earlier one: its terms are finite and
+  // masked out); mask has room for whole SIMD widths from `first`.
+  double value_of_range(const Vec3& p, double radius, size_t first, size_t count,
+                        const double* mask, bool try_wholly_inside = true) const;
 
   // One value per triangle (out.size() == size()).
   void values(const Vec3& p, double radius, std::span<double> out) const;

@@ -75,6 +75,7 @@ class ClusterField {
     field::TriangleBatch batch;
     std::vector<uint8_t> lane_set;  // batch lanes are set when first listed
     std::vector<uint32_t> lanes;          // clipped by the support sphere at the sample
+    std::vector<double> listed;           // 1 for those lanes, else 0 (value_of_range)
     std::vector<uint32_t> inside_lanes;   // wholly inside it (a gradient's sample only)
   };
   template <Want kWant>
@@ -86,6 +87,9 @@ class ClusterField {
   void add_member(const accel::SupportInterval& iv);
   Batch& batch_for(const Impl::Group& group);
   void add_triangle(Batch& b, uint32_t triangle, double enter, double exit);
+  static bool listed_in_range(const Batch& b);
+  static void mark_listed(Batch& b);
+  double clipped_value(const Batch& b, const Vec3& p, double radius) const;
 
   void make_members() const;
 
@@ -185,6 +189,7 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   b.lane_set.clear();
   // Lanes for as many members as the cluster has (most clusters meet one mesh): sized once.
   b.batch.resize_unset(cluster_.size());
+  if (b.listed.size() < cluster_.size() + kSimdWidth) b.listed.resize(cluster_.size() + kSimdWidth);
   return b;
 }
 
@@ -220,6 +225,30 @@ void ClusterField::add_triangle(Batch& b, uint32_t index, double enter, double e
   b.lane_set.push_back(0);
 }
 
+// Where the listed lanes lie close together (at most twice the SIMD widths from the first to
+// the last as they fill), their range is read in place with the others masked out: a gather
+// per array and width (vgatherqpd) made half the time of a listed width. The soup: 12.6 lanes
+// from the first listed to the last for 9.9 listed; the dragon at R = 5, whose quartic lanes
+// lie between, 47 for 29. Renders, 5 pairs against the list: R = 1 0.94, the soup 0.93,
+// R = 5 0.97. (At most one width more than the list instead: the same within 1 %.)
+bool ClusterField::listed_in_range(const Batch& b) {
+  const size_t first = b.lanes.front(), count = b.lanes.back() - first + 1;
+  return whole_simd_widths(count) <= 2 * whole_simd_widths(b.lanes.size());
+}
+
+void ClusterField::mark_listed(Batch& b) {
+  if (b.lanes.empty() || !listed_in_range(b)) return;
+  const size_t first = b.lanes.front(), last = b.lanes.back();
+  std::fill(b.listed.begin() + first, b.listed.begin() + last + 1, 0.0);
+  for (uint32_t lane : b.lanes) b.listed[lane] = 1.0;
+}
+
+double ClusterField::clipped_value(const Batch& b, const Vec3& p, double radius) const {
+  if (!listed_in_range(b)) return b.batch.value(p, radius, b.lanes, false);
+  const size_t first = b.lanes.front(), count = b.lanes.back() - first + 1;
+  return b.batch.value_of_range(p, radius, first, count, b.listed.data(), false);
+}
+
 template <Want kWant>
 field::FieldSample ClusterField::evaluate(double t) {
   add_members_entered_by(t);
@@ -252,6 +281,7 @@ field::FieldSample ClusterField::evaluate(double t) {
       }
       (wholly_inside ? b.inside_lanes : b.lanes).push_back(lane);
     }
+    if constexpr (kWant == Want::value) mark_listed(b);
     const double radius = b.group->radius, strength = b.group->strength;
     sum.value += strength * inside.value(s);
     stats_.field_evaluations += b.lanes.size() + b.inside_lanes.size();
@@ -259,7 +289,7 @@ field::FieldSample ClusterField::evaluate(double t) {
     // be so: a chunk that mixes them with clipped ones takes the general path for all (the
     // dragon's gradient samples at R = 5 cost 1.5 times the instructions that way).
     if constexpr (kWant == Want::value) {
-      if (!b.lanes.empty()) sum.value += strength * b.batch.value(p, radius, b.lanes, false);
+      if (!b.lanes.empty()) sum.value += strength * clipped_value(b, p, radius);
     } else {
       if (!b.inside_lanes.empty()) sum += b.batch.field(p, radius, b.inside_lanes) * strength;
       if (!b.lanes.empty()) sum += b.batch.field(p, radius, b.lanes, false) * strength;
