@@ -435,13 +435,15 @@ void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double 
   const double slack = 1e-9 * glm::length(bounds.extent());
   const Box3 grown{bounds.lo - Vec3(slack), bounds.hi + Vec3(slack)};
   if (!clip_to_box(ray, grown, tmin, tmax)) return;
-  double length = std::max(kFirstChunk * (tmax - tmin), surface.min_chunk);
+  const double unhinted = std::max(kFirstChunk * (tmax - tmin), surface.min_chunk);
   const bool hinted = mode == RootMode::first && first_gradient;
-  if (hinted) length = hinted_first_chunk(surface, ray, tmin, length);
+  double length = hinted ? hinted_first_chunk(surface, ray, tmin, unhinted) : unhinted;
   const size_t found = out.size();
-  for (double t0 = tmin;; length *= 2.0) {
+  for (double t0 = tmin;;) {
     const double t1 = tmax - t0 > 1.5 * length ? t0 + length : tmax;
     if (solve_range(surface, request, t0, t1, out, stats) || t1 >= tmax) break;
+    // After a hinted chunk, the chunks an unhinted search would have taken.
+    length = t0 == tmin && length != unhinted ? unhinted : 2.0 * length;
     t0 = t1;
   }
   if (hinted && out.size() > found) HitHints::remember(surface, ray.at(out[found]));
