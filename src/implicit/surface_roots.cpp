@@ -438,12 +438,14 @@ void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double 
   const double unhinted = std::max(kFirstChunk * (tmax - tmin), surface.min_chunk);
   const bool hinted = mode == RootMode::first && first_gradient;
   double length = hinted ? hinted_first_chunk(surface, ray, tmin, unhinted) : unhinted;
+  // After a hinted chunk, the chunks an unhinted search would have taken.
+  bool hint_used = length != unhinted;
   const size_t found = out.size();
   for (double t0 = tmin;;) {
     const double t1 = tmax - t0 > 1.5 * length ? t0 + length : tmax;
     if (solve_range(surface, request, t0, t1, out, stats) || t1 >= tmax) break;
-    // After a hinted chunk, the chunks an unhinted search would have taken.
-    length = t0 == tmin && length != unhinted ? unhinted : 2.0 * length;
+    length = hint_used ? unhinted : 2.0 * length;
+    hint_used = false;
     t0 = t1;
   }
   if (hinted && out.size() > found) HitHints::remember(surface, ray.at(out[found]));

@@ -87,9 +87,8 @@ class ClusterField {
   void add_member(const accel::SupportInterval& iv);
   Batch& batch_for(const Impl::Group& group);
   void add_triangle(Batch& b, uint32_t triangle, double enter, double exit);
-  static bool listed_in_range(const Batch& b);
-  static void mark_listed(Batch& b);
-  double clipped_value(const Batch& b, const Vec3& p, double radius) const;
+  // The listed clipped lanes' values (b.lanes, not empty), summed.
+  static double clipped_value(Batch& b, const Vec3& p, double radius);
 
   void make_members() const;
 
@@ -189,7 +188,8 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   b.lane_set.clear();
   // Lanes for as many members as the cluster has (most clusters meet one mesh): sized once.
   b.batch.resize_unset(cluster_.size());
-  if (b.listed.size() < cluster_.size() + kSimdWidth) b.listed.resize(cluster_.size() + kSimdWidth);
+  const size_t mask_size = cluster_.size() + kSimdWidth;  // value_of_range reads whole widths
+  if (b.listed.size() < mask_size) b.listed.resize(mask_size);
   return b;
 }
 
@@ -231,21 +231,13 @@ void ClusterField::add_triangle(Batch& b, uint32_t index, double enter, double e
 // from the first listed to the last for 9.9 listed; the dragon at R = 5, whose quartic lanes
 // lie between, 47 for 29. Renders, 5 pairs against the list: R = 1 0.94, the soup 0.93,
 // R = 5 0.97. (At most one width more than the list instead: the same within 1 %.)
-bool ClusterField::listed_in_range(const Batch& b) {
+double ClusterField::clipped_value(Batch& b, const Vec3& p, double radius) {
   const size_t first = b.lanes.front(), count = b.lanes.back() - first + 1;
-  return whole_simd_widths(count) <= 2 * whole_simd_widths(b.lanes.size());
-}
-
-void ClusterField::mark_listed(Batch& b) {
-  if (b.lanes.empty() || !listed_in_range(b)) return;
-  const size_t first = b.lanes.front(), last = b.lanes.back();
-  std::fill(b.listed.begin() + first, b.listed.begin() + last + 1, 0.0);
+  if (whole_simd_widths(count) > 2 * whole_simd_widths(b.lanes.size())) {
+    return b.batch.value(p, radius, b.lanes, false);
+  }
+  std::fill(b.listed.begin() + first, b.listed.begin() + first + count, 0.0);
   for (uint32_t lane : b.lanes) b.listed[lane] = 1.0;
-}
-
-double ClusterField::clipped_value(const Batch& b, const Vec3& p, double radius) const {
-  if (!listed_in_range(b)) return b.batch.value(p, radius, b.lanes, false);
-  const size_t first = b.lanes.front(), count = b.lanes.back() - first + 1;
   return b.batch.value_of_range(p, radius, first, count, b.listed.data(), false);
 }
 
@@ -281,7 +273,6 @@ field::FieldSample ClusterField::evaluate(double t) {
       }
       (wholly_inside ? b.inside_lanes : b.lanes).push_back(lane);
     }
-    if constexpr (kWant == Want::value) mark_listed(b);
     const double radius = b.group->radius, strength = b.group->strength;
     sum.value += strength * inside.value(s);
     stats_.field_evaluations += b.lanes.size() + b.inside_lanes.size();
