@@ -14,13 +14,6 @@ constexpr double kWeight2 = 0.109951743655322, kA2 = 0.816847572980459, kB2 = 0.
 
 }  // namespace
 
-LineQuartic triangle_line_quartic(const Triangle& t, const Vec3& origin, const Vec3& direction,
-                                  double radius) {
-  // As triangle_frame computes it.
-  const double area = 0.5 * glm::length(glm::cross(t.b - t.a, t.c - t.a));
-  return triangle_line_quartic(t, area, origin, direction, radius);
-}
-
 LineQuartic triangle_line_quartic(const Triangle& t, double area, const Vec3& origin,
                                   const Vec3& direction, double radius) {
   const double inv_r2 = 1.0 / (radius * radius);

@@ -26,11 +26,8 @@ struct LineQuartic {
 
 // The quartic of `triangle` along origin + s direction (direction of unit length); equal to
 // triangle_value(origin + s direction, triangle, radius) wherever all three corners are within
-// `radius` of that point.
-LineQuartic triangle_line_quartic(const Triangle& triangle, const Vec3& origin,
-                                  const Vec3& direction, double radius);
-// The same, given the triangle's area as triangle_frame computes it (the same bits): the
-// window march has it at hand, and its square root was a fifth of this function's time.
+// `radius` of that point. `area`: the triangle's, triangle_frame(triangle).area (computed once
+// per mesh; its square root was a fifth of this function's time).
 LineQuartic triangle_line_quartic(const Triangle& triangle, double area, const Vec3& origin,
                                   const Vec3& direction, double radius);
 

@@ -1,5 +1,6 @@
 // The quartic of a triangle's field along a line (field/triangle_quartic.hpp) against the
 // closed form triangle_value, wherever the whole triangle is inside the kernel's ball.
+#include "field/triangle_frame.hpp"
 #include "field/triangle_quartic.hpp"
 
 #include <gtest/gtest.h>
@@ -24,7 +25,8 @@ TEST(TriangleQuartic, EqualsTheClosedFormWhereTheTriangleIsInsideTheBall) {
     const Triangle tri{corner(), corner(), corner()};
     const Vec3 direction = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
     const Vec3 origin = centre - 3.0 * radius * direction + 0.2 * radius * Vec3(u(rng), u(rng), u(rng));
-    const LineQuartic quartic = triangle_line_quartic(tri, origin, direction, radius);
+    const LineQuartic quartic =
+        triangle_line_quartic(tri, triangle_frame(tri).area, origin, direction, radius);
     for (int k = 0; k <= 60; ++k) {
       const double s = 6.0 * radius * k / 60.0;
       const Vec3 p = origin + s * direction;
