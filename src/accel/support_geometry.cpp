@@ -109,6 +109,7 @@ struct LineContext {
   const std::vector<GeometrySource>* sources;
   std::vector<SupportInterval>* out;
   std::vector<TriangleCandidate>* triangles;  // spans computed after the traversal, batched
+  TriangleLineTable* terms;  // null: spans only
 };
 
 struct PointContext {
@@ -200,11 +201,17 @@ void span_triangles(const LineContext& line, std::vector<TriangleCandidate>& can
       ids.push_back(candidates[end++].primitive);
     }
     batch.gather({source.triangles, source.count}, ids);
-    batch.compute(line.origin, line.direction, source.shared_radius);
+    uint32_t row = SupportInterval::kNoTerms;
+    if (line.terms) {
+      row = uint32_t(batch.compute(line.origin, line.direction, source.shared_radius, *line.terms));
+    } else {
+      batch.compute(line.origin, line.direction, source.shared_radius);
+    }
     for (size_t k = 0; k < ids.size(); ++k) {
       const Span s = batch.span(k);
       if (s.empty() || s.exit < line.tmin || s.enter > line.tmax) continue;
-      line.out->push_back({source.first_id + ids[k], s.enter, s.exit});
+      line.out->push_back({source.first_id + ids[k], s.enter, s.exit,
+                           line.terms ? row + uint32_t(k) : SupportInterval::kNoTerms});
     }
     begin = end;
   }
@@ -277,7 +284,7 @@ void release_scene(RTCSceneTy* scene) {
 
 void intersect_line(RTCSceneTy* scene, const std::vector<GeometrySource>& sources,
                     const Vec3& origin, const Vec3& direction, double tmin, double tmax,
-                    std::vector<SupportInterval>& out) {
+                    std::vector<SupportInterval>& out, TriangleLineTable* terms) {
   LineContext line;
   rtcInitIntersectContext(&line.embree);
   line.origin = origin;
@@ -286,6 +293,7 @@ void intersect_line(RTCSceneTy* scene, const std::vector<GeometrySource>& source
   line.tmax = tmax;
   line.sources = &sources;
   line.out = &out;
+  line.terms = terms;
   thread_local std::vector<TriangleCandidate> candidates;
   candidates.clear();
   line.triangles = &candidates;

@@ -10,6 +10,7 @@
 
 #include "accel/support_index.hpp"
 #include "accel/support_shapes.hpp"
+#include "accel/triangle_line.hpp"
 
 struct RTCDeviceTy;
 struct RTCSceneTy;
@@ -79,7 +80,7 @@ void release_scene(RTCSceneTy* scene);
 // entry's first id.
 void intersect_line(RTCSceneTy* scene, const std::vector<GeometrySource>& sources,
                     const Vec3& origin, const Vec3& direction, double tmin, double tmax,
-                    std::vector<SupportInterval>& out);
+                    std::vector<SupportInterval>& out, TriangleLineTable* terms);
 void contain_point(RTCSceneTy* scene, const std::vector<GeometrySource>& sources, const Vec3& p,
                    std::vector<uint32_t>& out);
 

@@ -185,9 +185,10 @@ size_t SupportIndex::memory_bytes() const {
 }
 
 void SupportIndex::intersect(const Vec3& origin, const Vec3& direction, double tmin, double tmax,
-                             std::vector<SupportInterval>& out) const {
+                             std::vector<SupportInterval>& out,
+                             TriangleLineTable* terms) const {
   if (impl_->size == 0) return;
-  detail::intersect_line(impl_->scene, impl_->sources, origin, direction, tmin, tmax, out);
+  detail::intersect_line(impl_->scene, impl_->sources, origin, direction, tmin, tmax, out, terms);
 }
 
 void SupportIndex::contain(const Vec3& p, std::vector<uint32_t>& out) const {

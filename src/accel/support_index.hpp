@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "accel/support_shapes.hpp"
+#include "accel/triangle_line.hpp"
 #include "accel/triangle_supports.hpp"
 #include "field/arc.hpp"
 #include "field/segment.hpp"
@@ -46,9 +47,12 @@ struct SupportSources {
 };
 
 struct SupportInterval {
+  static constexpr uint32_t kNoTerms = UINT32_MAX;
   uint32_t primitive = 0;
   double enter = 0.0;
   double exit = 0.0;
+  // A triangle's row in the TriangleLineTable the query filled, if it was asked to.
+  uint32_t terms = kNoTerms;
 };
 
 class SupportIndex {
@@ -70,9 +74,10 @@ class SupportIndex {
 
   // Appends every primitive whose support the line origin + t direction (unit direction)
   // crosses with some t in [tmin, tmax]; the interval is the whole crossing, not clipped.
-  // tmin must be finite (an infinite one is read as 0).
+  // tmin must be finite (an infinite one is read as 0). With `terms`, each triangle's terms
+  // along the line (accel/triangle_line.hpp) go there too, in the row its interval names.
   void intersect(const Vec3& origin, const Vec3& direction, double tmin, double tmax,
-                 std::vector<SupportInterval>& out) const;
+                 std::vector<SupportInterval>& out, TriangleLineTable* terms = nullptr) const;
   // Appends every primitive within its radius of p (strictly: the field is zero at distance R).
   void contain(const Vec3& p, std::vector<uint32_t>& out) const;
 

@@ -57,13 +57,18 @@ struct Lane {
   return {least(span.enter, piece.enter), most(span.exit, piece.exit)};
 }
 
-[[gnu::always_inline]] inline Lane ball(P o, P d, P center, double r2) {
+// A corner's ball, and how far along the line the corner lies (u.(corner - origin)).
+struct Ball {
+  Lane span;
+  double along;
+};
+[[gnu::always_inline]] inline Ball ball(P o, P d, P center, double r2) {
   const P w = sub(o, center);
   const double tc = -dot(w, d);
   const P closest = add(w, mul(d, tc));
   const double q2 = dot(closest, closest);
   const double half = std::sqrt(q2 <= r2 ? r2 - q2 : 0.0);
-  return {q2 <= r2 ? tc - half : kInfinity, q2 <= r2 ? tc + half : -kInfinity};
+  return {{q2 <= r2 ? tc - half : kInfinity, q2 <= r2 ? tc + half : -kInfinity}, tc};
 }
 
 // Points within R of the edge's line whose projection lies on the edge (support_shapes.cpp's
@@ -73,13 +78,14 @@ struct Lane {
 // overlap within the processor's reordering window.
 struct CapsuleStart {
   P dp, wp;
-  double length, dw, ww, dp2, inv_dp2, inv_dw;
+  double length, inv_length, dw, ww, dp2, inv_dp2, inv_dw;
 };
 [[gnu::always_inline]] inline CapsuleStart capsule_start(P o, P d, P a, P b) {
   CapsuleStart c;
   const P axis = sub(b, a);
   c.length = std::sqrt(dot(axis, axis));
-  const P u = mul(axis, 1.0 / (c.length > 0.0 ? c.length : 1.0));
+  c.inv_length = 1.0 / (c.length > 0.0 ? c.length : 1.0);
+  const P u = mul(axis, c.inv_length);
   const P w = sub(o, a);
   c.dw = dot(d, u);
   c.ww = dot(w, u);
@@ -103,22 +109,41 @@ struct CapsuleStart {
   return normal({miss > 0.0 ? span.enter : kInfinity, miss > 0.0 ? span.exit : -kInfinity});
 }
 
-// The prism over the triangle, |height| <= R (empty for a zero-area triangle).
-[[gnu::always_inline]] inline Lane prism(P o, P d, P a, P b, P c, double radius) {
+// The prism over the triangle, |height| <= R (empty for a zero-area triangle), in two
+// stages: the line's height above the plane and its distances into the three edges' lines
+// (g0 + t g1 >= 0 inside; the edges' inward normals n x edge are not of unit length), which
+// TriangleLineTable keeps as well, then the clips.
+struct PrismStart {
+  double n_length, h0, h1;
+  double g0[3], g1[3];
+};
+[[gnu::always_inline]] inline PrismStart prism_start(P o, P d, P a, P b, P c) {
+  PrismStart p;
   const P n0 = cross(sub(b, a), sub(c, a));
-  const double n_length = std::sqrt(dot(n0, n0));
-  const P n = mul(n0, 1.0 / (n_length > 0.0 ? n_length : 1.0));
-  Lane span{-kInfinity, kInfinity};
-  const double h0 = dot(sub(o, a), n), h1 = dot(d, n);
-  const double inv_h1 = reciprocal(h1);
-  span = clip_at(radius - h0, -h1, (radius - h0) * inv_h1, span);
-  span = clip_at(radius + h0, h1, -(radius + h0) * inv_h1, span);
+  p.n_length = std::sqrt(dot(n0, n0));
+  const P n = mul(n0, 1.0 / (p.n_length > 0.0 ? p.n_length : 1.0));
+  p.h0 = dot(sub(o, a), n);
+  p.h1 = dot(d, n);
   // Written out: the vectorizer takes no inner loops.
   const P in_ab = cross(n, sub(b, a)), in_bc = cross(n, sub(c, b)), in_ca = cross(n, sub(a, c));
-  span = clip(dot(sub(o, a), in_ab), dot(d, in_ab), span);
-  span = clip(dot(sub(o, b), in_bc), dot(d, in_bc), span);
-  span = clip(dot(sub(o, c), in_ca), dot(d, in_ca), span);
-  return normal({n_length > 0.0 ? span.enter : kInfinity, n_length > 0.0 ? span.exit : -kInfinity});
+  p.g0[0] = dot(sub(o, a), in_ab);
+  p.g1[0] = dot(d, in_ab);
+  p.g0[1] = dot(sub(o, b), in_bc);
+  p.g1[1] = dot(d, in_bc);
+  p.g0[2] = dot(sub(o, c), in_ca);
+  p.g1[2] = dot(d, in_ca);
+  return p;
+}
+[[gnu::always_inline]] inline Lane prism(const PrismStart& p, double radius) {
+  Lane span{-kInfinity, kInfinity};
+  const double inv_h1 = reciprocal(p.h1);
+  span = clip_at(radius - p.h0, -p.h1, (radius - p.h0) * inv_h1, span);
+  span = clip_at(radius + p.h0, p.h1, -(radius + p.h0) * inv_h1, span);
+  span = clip(p.g0[0], p.g1[0], span);
+  span = clip(p.g0[1], p.g1[1], span);
+  span = clip(p.g0[2], p.g1[2], span);
+  return normal({p.n_length > 0.0 ? span.enter : kInfinity,
+                 p.n_length > 0.0 ? span.exit : -kInfinity});
 }
 
 }  // namespace
@@ -146,7 +171,9 @@ void TriangleSpanBatch::gather(std::span<const field::Triangle> triangles,
   }
 }
 
-void TriangleSpanBatch::compute(const Vec3& origin, const Vec3& direction, double radius) {
+template <bool kTerms>
+void TriangleSpanBatch::compute_lanes(const Vec3& origin, const Vec3& direction, double radius,
+                                      TriangleLineTable::Columns terms) {
   const P o{origin.x, origin.y, origin.z}, d{direction.x, direction.y, direction.z};
   const double r2 = radius * radius;
   // Named pointers: the vectorizer does not see through an array of them.
@@ -160,20 +187,52 @@ void TriangleSpanBatch::compute(const Vec3& origin, const Vec3& direction, doubl
   for (size_t k = 0; k < n; ++k) {
     const P a{ax[k], ay[k], az[k]}, b{bx[k], by[k], bz[k]}, e{cx[k], cy[k], cz[k]};
     Lane span{kInfinity, -kInfinity};
-    span = join(prism(o, d, a, b, e, radius), span);
+    const PrismStart p = prism_start(o, d, a, b, e);
+    span = join(prism(p, radius), span);
     const CapsuleStart ab = capsule_start(o, d, a, b), be = capsule_start(o, d, b, e),
                        ea = capsule_start(o, d, e, a);
     // The balls' own square roots meanwhile (joined in the scalar twin's order after).
-    const Lane ball_a = ball(o, d, a, r2), ball_b = ball(o, d, b, r2), ball_e = ball(o, d, e, r2);
+    const Ball ball_a = ball(o, d, a, r2), ball_b = ball(o, d, b, r2), ball_e = ball(o, d, e, r2);
     span = join(capsule_end(ab, r2), span);
     span = join(capsule_end(be, r2), span);
     span = join(capsule_end(ea, r2), span);
-    span = join(ball_a, span);
-    span = join(ball_b, span);
-    span = join(ball_e, span);
+    span = join(ball_a.span, span);
+    span = join(ball_b.span, span);
+    span = join(ball_e.span, span);
     enter[k] = span.enter;
     exit[k] = span.exit;
+    if constexpr (kTerms) {  // accel::triangle_reach and corners_within, in the same order
+      terms.h0[k] = p.h0;
+      terms.h1[k] = p.h1;
+      terms.o00[k] = -(p.g0[0] * ab.inv_length);
+      terms.o01[k] = -(p.g1[0] * ab.inv_length);
+      terms.o10[k] = -(p.g0[1] * be.inv_length);
+      terms.o11[k] = -(p.g1[1] * be.inv_length);
+      terms.o20[k] = -(p.g0[2] * ea.inv_length);
+      terms.o21[k] = -(p.g1[2] * ea.inv_length);
+      terms.lo[k] = least(least(ball_a.along, ball_b.along), ball_e.along);
+      terms.hi[k] = most(most(ball_a.along, ball_b.along), ball_e.along);
+      terms.within_enter[k] = most(most(ball_a.span.enter, ball_b.span.enter), ball_e.span.enter);
+      terms.within_exit[k] = least(least(ball_a.span.exit, ball_b.span.exit), ball_e.span.exit);
+      terms.twice_area[k] = p.n_length;
+    }
   }
+}
+
+void TriangleSpanBatch::compute(const Vec3& origin, const Vec3& direction, double radius) {
+  compute_lanes<false>(origin, direction, radius, {});
+}
+
+size_t TriangleSpanBatch::compute(const Vec3& origin, const Vec3& direction, double radius,
+                                  TriangleLineTable& table) {
+  const size_t first = table.grow(enter_.size());
+  TriangleLineTable::Columns c = table.columns();
+  for (double** column : {&c.h0, &c.h1, &c.o00, &c.o01, &c.o10, &c.o11, &c.o20, &c.o21, &c.lo,
+                          &c.hi, &c.within_enter, &c.within_exit, &c.twice_area}) {
+    *column += first;
+  }
+  compute_lanes<true>(origin, direction, radius, c);
+  return first;
 }
 
 }  // namespace convray::accel

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accel/support_shapes.hpp"
+#include "accel/triangle_line.hpp"
 #include "field/triangle.hpp"
 #include "util/simd_width.hpp"
 
@@ -21,11 +22,19 @@ class TriangleSpanBatch {
   // spans[k] for the k-th gathered triangle; an empty support crossing gives an empty Span.
   // `direction` is of unit length.
   void compute(const Vec3& origin, const Vec3& direction, double radius);
+  // The same, and each gathered triangle's terms along the line (accel/triangle_line.hpp) in
+  // new rows of `table`: the k-th triangle's in the returned row + k.
+  size_t compute(const Vec3& origin, const Vec3& direction, double radius,
+                 TriangleLineTable& table);
 
   size_t size() const { return size_; }
   Span span(size_t k) const { return {enter_[k], exit_[k]}; }
 
  private:
+  template <bool kTerms>
+  void compute_lanes(const Vec3& origin, const Vec3& direction, double radius,
+                     TriangleLineTable::Columns terms);
+
   std::vector<double> corner_[3][3];  // corner_[vertex][axis]
   std::vector<double> enter_, exit_;  // rounded up to whole SIMD widths
   size_t size_ = 0;

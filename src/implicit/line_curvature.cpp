@@ -95,7 +95,6 @@ LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFr
       flipped_(strength < 0.0),
       triangle_(frame.has_area()),  // no area, no field
       triangle_corners_(&tri),
-      frame_(&frame),
       ray_(&ray) {
   const Extent extent = extent_along(ray, std::array<Vec3, 3>{tri.a, tri.b, tri.c});
   lo_ = extent.lo;
@@ -105,31 +104,8 @@ LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFr
   down_anywhere_ = triangle_down_anywhere(weight_, measure_, r2_, limit_);
 }
 
-TriangleReach LineCurvature::reach_along(const field::Triangle& tri,
-                                         const field::TriangleFrame& frame, const Ray& ray) {
-  TriangleReach reach;
-  const Vec3 corners[3] = {tri.a, tri.b, tri.c};
-  const Vec3& n = frame.normal;
-  reach.height[0] = glm::dot(n, ray.origin - tri.a);
-  reach.height[1] = glm::dot(n, ray.direction);
-  for (int k = 0; k < 3; ++k) {
-    const Vec3& v = corners[k];
-    // In the plane, into the triangle; unit, as n and the edge's direction are unit and
-    // perpendicular.
-    const Vec3 inward = glm::cross(n, frame.direction[k]);
-    reach.outside[k][0] = -glm::dot(inward, ray.origin - v);
-    reach.outside[k][1] = -glm::dot(inward, ray.direction);
-  }
-  const double along[3] = {glm::dot(tri.a - ray.origin, ray.direction),
-                           glm::dot(tri.b - ray.origin, ray.direction),
-                           glm::dot(tri.c - ray.origin, ray.direction)};
-  reach.along[0] = std::min(std::min(along[0], along[1]), along[2]);
-  reach.along[1] = std::max(std::max(along[0], along[1]), along[2]);
-  return reach;
-}
-
 void LineCurvature::prepare_triangle() const {
-  reach_ = reach_along(*triangle_corners_, *frame_, *ray_);
+  reach_ = accel::triangle_reach(ray_->origin, ray_->direction, *triangle_corners_);
   prepared_ = true;
 }
 
@@ -160,13 +136,9 @@ LineCurvature::DownTerms LineCurvature::triangle_down_terms(const field::Triangl
                                                             const field::TriangleFrame& frame,
                                                             double strength, double radius,
                                                             const Ray& ray) {
-  // As the constructor sets them (a triangle without a finite area has no field).
-  const double weight = std::abs(strength), r2 = radius * radius, limit = 2.0 * kPi;
-  const bool area = frame.has_area();
-  const double measure = area ? frame.area : 0.0;
-  return {weight, radius, r2, measure, limit,
-          triangle_down_anywhere(weight, measure, r2, limit), area,
-          area ? reach_along(tri, frame, ray) : TriangleReach{}};
+  if (!frame.has_area()) return triangle_down_terms(0.0, strength, radius, TriangleReach{});
+  return triangle_down_terms(2.0 * frame.area, strength, radius,
+                             accel::triangle_reach(ray.origin, ray.direction, tri));
 }
 
 }  // namespace convray::implicit

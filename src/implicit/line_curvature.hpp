@@ -54,7 +54,7 @@ class LineCurvature {
   // `ray` must outlive this (a triangle's plane and edges are measured against it lazily).
   LineCurvature(const ConvolutionSurface::Impl& surface, uint32_t id, const Ray& ray);
   // A triangle of a mesh with this strength and radius (what the surface's id gives).
-  // `frame` (its normal, edges and area, computed once per mesh) must outlive this too.
+  // `frame` gives its area (computed once per mesh).
   LineCurvature(const field::Triangle& triangle, const field::TriangleFrame& frame,
                 double strength, double radius, const Ray& ray);
 
@@ -80,6 +80,19 @@ class LineCurvature {
   static DownTerms triangle_down_terms(const field::Triangle& triangle,
                                        const field::TriangleFrame& frame, double strength,
                                        double radius, const Ray& ray);
+  // The same from the triangle's reach along the ray and its area, made with its span
+  // (accel's TriangleLineTable): what the march's table takes. `twice_area` as field's
+  // triangle_frame makes it: a triangle has an area where it is positive and finite.
+  static DownTerms triangle_down_terms(double twice_area, double strength, double radius,
+                                       const TriangleReach& reach) {
+    // As the constructor sets them (a triangle without a finite area has no field).
+    const double weight = std::abs(strength), r2 = radius * radius, limit = 2.0 * kPi;
+    const bool area = twice_area > 0.0 && twice_area < kInfinity;
+    const double measure = area ? 0.5 * twice_area : 0.0;
+    return {weight, radius, r2, measure, limit,
+            triangle_down_anywhere(weight, measure, r2, limit), area,
+            area ? reach : TriangleReach{}};
+  }
 
  private:
   // The same for the skeleton's integral of K with a positive strength.
@@ -88,8 +101,6 @@ class LineCurvature {
   // The plane and edges of the triangle, along the line: made when first asked for (most
   // windows never need them).
   void prepare_triangle() const;
-  static TriangleReach reach_along(const field::Triangle& triangle,
-                                   const field::TriangleFrame& frame, const Ray& ray);
   // bend_down's largest value: the triangle's whole area within reach, s >= 0.
   static double triangle_down_anywhere(double weight, double measure, double r2, double limit) {
     return weight * std::min(4.0 * measure / r2, limit);
@@ -113,7 +124,6 @@ class LineCurvature {
   // foot of p(t), each linear in t: value at t = 0 and slope.
   bool triangle_ = false;
   const field::Triangle* triangle_corners_ = nullptr;
-  const field::TriangleFrame* frame_ = nullptr;
   const Ray* ray_ = nullptr;
   mutable bool prepared_ = false;
   mutable TriangleReach reach_;

@@ -328,8 +328,11 @@ bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepReque
   const Ray& ray = request.ray;
   const RootMode mode = request.mode;
   thread_local std::vector<accel::SupportInterval> intervals;
+  // The triangles' terms along the ray, made with their spans, for the window march.
+  thread_local accel::TriangleLineTable lines;
   intervals.clear();
-  surface.index->intersect(ray.origin, ray.direction, tmin, tmax, intervals);
+  lines.clear();
+  surface.index->intersect(ray.origin, ray.direction, tmin, tmax, intervals, &lines);
   // Fit each support's crossing whole: its ends are the zeros the paper's fit relies on.
   stats.primitives += intervals.size();
   if (intervals.empty()) return false;
@@ -358,7 +361,8 @@ bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepReque
       } else if (surface.tracer == Tracer::fits) {
         tracer.solve_cluster(cluster, tmin, tmax, mode, out);
       } else {
-        march_cluster(surface, ray, cluster, tmin, tmax, mode, out, stats, request.gradient);
+        march_cluster(surface, ray, cluster, lines, tmin, tmax, mode, out, stats,
+                      request.gradient);
       }
     }
     if (mode != RootMode::all && out.size() > found) return true;

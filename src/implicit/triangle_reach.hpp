@@ -1,23 +1,21 @@
 #pragma once
 // Where a triangle lies relative to a window [a, b] of a line, for the window march's
-// curvature bounds (line_curvature.hpp explains them): the triangle's height above its plane
-// and the outward distances past its three edges of the foot of p(t), each linear in t,
-// given by its value at t = 0 and its slope.
+// curvature bounds (line_curvature.hpp explains them), from its TriangleReach: the triangle's
+// height above its plane and the outward distances past its three edges of the foot of p(t),
+// each linear in t, and its corners' depth range along the line.
 //
 // The formulas are branch-free (every condition a select) so that one copy serves both the
 // scalar LineCurvature and DownBendTable's vectorized loop, with the same bits.
 #include <algorithm>
 #include <cmath>
 
+#include "accel/triangle_line.hpp"
 #include "core/ray.hpp"
 
 namespace convray::implicit {
 
-struct TriangleReach {
-  double height[2] = {0.0, 0.0};  // distance to the plane along the normal: h0 + h1 t
-  double outside[3][2] = {};      // past edge k, in the plane: o0 + o1 t (<= 0: inside its line)
-  double along[2] = {0.0, 0.0};   // the range [lo, hi] of u.(q - origin) over its corners q
-};
+// The plane, edges and depth range of a triangle along a line (made with its support's span).
+using accel::TriangleReach;
 
 // A bound on the triangle's area (`measure`) within R of the window: within the ball of
 // radius R + w/2 around the window's middle (w the window's length), which holds every

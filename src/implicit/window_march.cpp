@@ -45,7 +45,7 @@ class ClusterField {
   // `origin_t`: where the march starts, the quartics' s = 0 (kept near the samples, so that
   // their powers of s do not cancel).
   ClusterField(const Impl& s, const Ray& ray, std::span<const accel::SupportInterval> cluster,
-               double origin_t, TraceStats& stats);
+               const accel::TriangleLineTable& lines, double origin_t, TraceStats& stats);
 
   double value_minus_threshold(double t);  // F / T - 1
   field::FieldSample sample(double t);     // F and its gradient
@@ -86,7 +86,8 @@ class ClusterField {
   void add_members_entered_by(double t);
   void add_member(const accel::SupportInterval& iv);
   Batch& batch_for(const Impl::Group& group);
-  void add_triangle(Batch& b, uint32_t triangle, double enter, double exit);
+  void add_triangle(Batch& b, uint32_t triangle, double enter, double exit,
+                    const accel::Span& corners_within);
   // The listed clipped lanes' values (b.lanes, not empty), summed.
   static double clipped_value(Batch& b, const Vec3& p, double radius);
 
@@ -96,6 +97,7 @@ class ClusterField {
   const Ray& ray_;
   TraceStats& stats_;
   std::span<const accel::SupportInterval> cluster_;
+  const accel::TriangleLineTable& lines_;
   size_t members_added_ = 0;  // cluster_[0, members_added_) are in the batches and the table
   size_t batches_used_ = 0;
   double reach_ = -kInfinity;
@@ -118,9 +120,10 @@ thread_local std::vector<ClusterField::Member> ClusterField::others_;
 thread_local std::vector<ClusterField::Batch> ClusterField::batches_;
 
 ClusterField::ClusterField(const Impl& s, const Ray& ray,
-                           std::span<const accel::SupportInterval> cluster, double origin_t,
+                           std::span<const accel::SupportInterval> cluster,
+                           const accel::TriangleLineTable& lines, double origin_t,
                            TraceStats& stats)
-    : s_(s), ray_(ray), stats_(stats), cluster_(cluster), origin_t_(origin_t) {
+    : s_(s), ray_(ray), stats_(stats), cluster_(cluster), lines_(lines), origin_t_(origin_t) {
   others_.clear();
   down_.reset(cluster.size());
   for (const accel::SupportInterval& iv : cluster) reach_ = std::max(reach_, iv.exit);
@@ -144,13 +147,21 @@ void ClusterField::add_member(const accel::SupportInterval& iv) {
   }
   const uint32_t triangle = iv.primitive - s_.triangle_base;
   const Impl::Group& group = s_.group_of(triangle);
+  const field::Triangle& corners = s_.triangles[triangle];
+  const bool has_terms = iv.terms != accel::SupportInterval::kNoTerms;
   by_table_ = by_table_ && !(group.strength < 0.0);
   if (by_table_) {
     down_.add(iv.enter, iv.exit,
-              LineCurvature::triangle_down_terms(s_.triangles[triangle], s_.frames[triangle],
-                                                 group.strength, group.radius, ray_));
+              has_terms ? LineCurvature::triangle_down_terms(lines_.twice_area(iv.terms),
+                                                             group.strength, group.radius,
+                                                             lines_.reach(iv.terms))
+                        : LineCurvature::triangle_down_terms(corners, s_.frames[triangle],
+                                                             group.strength, group.radius, ray_));
   }
-  add_triangle(batch_for(group), triangle, iv.enter, iv.exit);
+  add_triangle(batch_for(group), triangle, iv.enter, iv.exit,
+               has_terms ? lines_.corners_within(iv.terms)
+                         : accel::corners_within(ray_.origin, ray_.direction, corners,
+                                                 group.radius));
 }
 
 // Every member's whole LineCurvature, for the upward bounds (asked only above T, after a
@@ -193,33 +204,16 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   return b;
 }
 
-void ClusterField::add_triangle(Batch& b, uint32_t index, double enter, double exit) {
-  const field::Triangle& triangle = s_.triangles[index];
+void ClusterField::add_triangle(Batch& b, uint32_t index, double enter, double exit,
+                                const accel::Span& corners_within) {
   b.triangles.push_back(index);
   b.enter.push_back(enter);
   b.exit.push_back(exit);
-  // Where all three corners are within R of p(t): the intersection of their balls' chords.
-  const double radius = b.group->radius;
-  double lo = -kInfinity, hi = kInfinity;
-  for (const Vec3& corner : {triangle.a, triangle.b, triangle.c}) {
-    const Vec3 w = corner - ray_.origin;
-    const double along = glm::dot(w, ray_.direction);
-    const double across2 = glm::dot(w, w) - along * along;
-    const double half2 = radius * radius - across2;
-    if (!(half2 > 0.0)) {
-      lo = kInfinity;
-      break;
-    }
-    const double half = std::sqrt(half2);
-    lo = std::max(lo, along - half);
-    hi = std::min(hi, along + half);
-  }
-  // Shrunk by a hair, so rounding never takes a corner just outside for inside.
-  const double margin = 1e-9 * radius;
-  lo += margin;
-  hi -= margin;
-  b.inside_enter.push_back(lo);
-  b.inside_exit.push_back(hi);
+  // Where all three corners are within R of p(t), shrunk by a hair, so rounding never takes a
+  // corner just outside for inside.
+  const double margin = 1e-9 * b.group->radius;
+  b.inside_enter.push_back(corners_within.enter + margin);
+  b.inside_exit.push_back(corners_within.exit - margin);
   b.quartics.emplace_back();
   b.has_quartic.push_back(0);
   b.lane_set.push_back(0);
@@ -577,11 +571,12 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
 }  // namespace
 
 void march_cluster(const Impl& surface, const Ray& ray,
-                   std::span<const accel::SupportInterval> cluster, double tmin, double tmax,
+                   std::span<const accel::SupportInterval> cluster,
+                   const accel::TriangleLineTable& lines, double tmin, double tmax,
                    RootMode mode, std::vector<double>& out, TraceStats& stats,
                    std::optional<Vec3>* first_gradient) {
   const double from = std::max(tmin, cluster.front().enter);
-  ClusterField field(surface, ray, cluster, from, stats);
+  ClusterField field(surface, ray, cluster, lines, from, stats);
   const double to = std::min(tmax, field.reach());
   if (!(from < to)) return;
   Marcher marcher(surface, field, mode, first_gradient != nullptr, out, stats);

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "accel/support_index.hpp"
+#include "accel/triangle_line.hpp"
 #include "implicit/surface_impl.hpp"
 #include "implicit/surface_roots.hpp"
 
@@ -30,10 +31,12 @@ namespace convray::implicit {
 
 // Appends the roots of F = T in [tmin, tmax] that `mode` asks for. `cluster` holds the
 // supports crossing the ray there, sorted by entry (every primitive whose support meets the
-// ray in [tmin, tmax]). With RootMode::first and `first_gradient`, the exact gradient at the
-// root is put there. RootMode::any appends a point past the first sign change, unrefined.
+// ray in [tmin, tmax]); `lines` holds the rows their `terms` name (a triangle's without one
+// is made here). With RootMode::first and `first_gradient`, the exact gradient at the root is
+// put there. RootMode::any appends a point past the first sign change, unrefined.
 void march_cluster(const ConvolutionSurface::Impl& surface, const Ray& ray,
-                   std::span<const accel::SupportInterval> cluster, double tmin, double tmax,
+                   std::span<const accel::SupportInterval> cluster,
+                   const accel::TriangleLineTable& lines, double tmin, double tmax,
                    RootMode mode, std::vector<double>& out, TraceStats& stats,
                    std::optional<Vec3>* first_gradient);
 

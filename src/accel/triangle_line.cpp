@@ -1,0 +1,67 @@
+#include "accel/triangle_line.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace convray::accel {
+
+// Each step as TriangleSpanBatch rounds it (triangle_span_batch.cpp: prism, capsule_start,
+// ball): the unit normal by the reciprocal of its length, each edge's inward normal n x edge
+// scaled by the reciprocal of the edge's length.
+TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
+                             const field::Triangle& triangle) {
+  const Vec3 corner[3] = {triangle.a, triangle.b, triangle.c};
+  Vec3 n = glm::cross(triangle.b - triangle.a, triangle.c - triangle.a);
+  const double n_length = std::sqrt(glm::dot(n, n));
+  n *= 1.0 / (n_length > 0.0 ? n_length : 1.0);
+  TriangleReach reach;
+  reach.height[0] = glm::dot(origin - triangle.a, n);
+  reach.height[1] = glm::dot(direction, n);
+  double along[3];
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& v = corner[k];
+    const Vec3 edge = corner[(k + 1) % 3] - v;
+    const double length = std::sqrt(glm::dot(edge, edge));
+    const double inverse = 1.0 / (length > 0.0 ? length : 1.0);
+    const Vec3 inward = glm::cross(n, edge);
+    reach.outside[k][0] = -(glm::dot(origin - v, inward) * inverse);
+    reach.outside[k][1] = -(glm::dot(direction, inward) * inverse);
+    along[k] = -glm::dot(origin - v, direction);
+  }
+  reach.along[0] = std::min(std::min(along[0], along[1]), along[2]);
+  reach.along[1] = std::max(std::max(along[0], along[1]), along[2]);
+  return reach;
+}
+
+Span corners_within(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
+                    double radius) {
+  Span within{-kInfinity, kInfinity};
+  for (const Vec3& corner : {triangle.a, triangle.b, triangle.c}) {
+    const Span ball = sphere_span(origin, direction, corner, radius);
+    if (ball.empty()) return {kInfinity, -kInfinity};
+    within.enter = std::max(within.enter, ball.enter);
+    within.exit = std::min(within.exit, ball.exit);
+  }
+  return within;
+}
+
+size_t TriangleLineTable::grow(size_t n) {
+  const size_t first = size_;
+  size_ += n;
+  if (size_ > h0_.size()) {
+    const size_t room = std::max(size_, 2 * h0_.size());
+    for (auto* column : {&h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_,
+                         &within_enter_, &within_exit_, &twice_area_}) {
+      column->resize(room);
+    }
+  }
+  return first;
+}
+
+TriangleLineTable::Columns TriangleLineTable::columns() {
+  return {h0_.data(),  h1_.data(),  o00_.data(),          o01_.data(),         o10_.data(),
+          o11_.data(), o20_.data(), o21_.data(),          lo_.data(),          hi_.data(),
+          within_enter_.data(),     within_exit_.data(), twice_area_.data()};
+}
+
+}  // namespace convray::accel

@@ -1,0 +1,70 @@
+#pragma once
+// What a line sees of a triangle besides its support's span: the terms the window march
+// (implicit/) sets up for every triangle it reaches, made where the span is made. The exact
+// spans' SIMD batch (TriangleSpanBatch) has the corners in its lanes and computes the same
+// products for the prism and the corner balls; writing these terms beside the spans costs a
+// few stores per lane, where the march computed them again one triangle at a time (at R = 5
+// a ninth of a render: docs/benchmarks.md, sixteenth step). The scalar twins below compute
+// them with the batch's operations in its order, to the bit (tests compare).
+#include <cstddef>
+#include <vector>
+
+#include "accel/support_shapes.hpp"
+#include "field/triangle.hpp"
+#include "util/math.hpp"
+
+namespace convray::accel {
+
+// The triangle's height above its plane and the outward distances past its three edges of
+// the foot of p(t) = origin + t direction, each linear in t (its value at t = 0 and its
+// slope), and the range of u.(q - origin) over its corners q. All zero where the triangle has
+// no area (no plane). implicit/triangle_reach.hpp's curvature bounds read them.
+struct TriangleReach {
+  double height[2] = {0.0, 0.0};  // along the unit normal (b - a) x (c - a): h0 + h1 t
+  double outside[3][2] = {};      // past edge k (corner k to k + 1), in the plane: o0 + o1 t
+                                  // (<= 0: on the triangle's side of its line)
+  double along[2] = {0.0, 0.0};   // [lo, hi]
+};
+
+// The scalar twins (direction of unit length).
+TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
+                             const field::Triangle& triangle);
+// Where all three corners lie within `radius` of p(t): the intersection of the corners' ball
+// chords (empty where a corner's ball misses the line). There the whole triangle lies inside
+// the kernel's ball, and its field along the line is a quartic in t.
+Span corners_within(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
+                    double radius);
+
+// Rows of those terms, one per triangle the batch handled, in columns (the batch stores
+// whole SIMD widths at once). Cleared by its owner for each line.
+class TriangleLineTable {
+ public:
+  void clear() { size_ = 0; }
+  size_t size() const { return size_; }
+  // Appends n rows (their values to be written) and returns the first; n whole SIMD widths.
+  size_t grow(size_t n);
+
+  TriangleReach reach(size_t row) const {  // inline: the march reads one per member
+    return {{h0_[row], h1_[row]},
+            {{o00_[row], o01_[row]}, {o10_[row], o11_[row]}, {o20_[row], o21_[row]}},
+            {lo_[row], hi_[row]}};
+  }
+  Span corners_within(size_t row) const { return {within_enter_[row], within_exit_[row]}; }
+  // |(b - a) x (c - a)|: twice the area (field::triangle_frame's, to a few ulps: the frame is
+  // made with fused multiply-adds, for the field's batch).
+  double twice_area(size_t row) const { return twice_area_[row]; }
+
+  // The columns, for the batch: height, outside (edge-major), along, corners within, area.
+  struct Columns {
+    double *h0, *h1, *o00, *o01, *o10, *o11, *o20, *o21, *lo, *hi, *within_enter, *within_exit,
+        *twice_area;
+  };
+  Columns columns();
+
+ private:
+  size_t size_ = 0;
+  std::vector<double> h0_, h1_, o00_, o01_, o10_, o11_, o20_, o21_, lo_, hi_;
+  std::vector<double> within_enter_, within_exit_, twice_area_;
+};
+
+}  // namespace convray::accel
