@@ -45,23 +45,31 @@ Span corners_within(const Vec3& origin, const Vec3& direction, const field::Tria
   return within;
 }
 
+// Room for whole 4 KiB pages of rows per column, plus the stagger (a cache line per column).
+constexpr size_t kPageDoubles = 512, kStagger = 8;
+
 size_t TriangleLineTable::grow(size_t n) {
   const size_t first = size_;
   size_ += n;
-  if (size_ > h0_.size()) {
-    const size_t room = std::max(size_, 2 * h0_.size());
-    for (auto* column : {&h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_,
-                         &within_enter_, &within_exit_, &twice_area_}) {
-      column->resize(room);
+  if (size_ + kStagger > stride_) {
+    const size_t rows = (std::max(size_, 2 * stride_) + kPageDoubles - 1) / kPageDoubles * kPageDoubles;
+    const size_t stride = rows + kStagger;
+    std::vector<double> grown(kColumns * stride);
+    for (size_t c = 0; c < kColumns; ++c) {  // the rows so far, each column to its new place
+      std::copy_n(buffer_.data() + c * stride_, first, grown.data() + c * stride);
     }
+    buffer_.swap(grown);
+    stride_ = stride;
   }
   return first;
 }
 
 TriangleLineTable::Columns TriangleLineTable::columns() {
-  return {h0_.data(),  h1_.data(),  o00_.data(),          o01_.data(),         o10_.data(),
-          o11_.data(), o20_.data(), o21_.data(),          lo_.data(),          hi_.data(),
-          within_enter_.data(),     within_exit_.data(), twice_area_.data()};
+  double* b = buffer_.data();
+  const size_t s = stride_;
+  return {b + kH0 * s,  b + kH1 * s,  b + kO00 * s, b + kO01 * s,         b + kO10 * s,
+          b + kO11 * s, b + kO20 * s, b + kO21 * s, b + kLo * s,          b + kHi * s,
+          b + kWithinEnter * s,       b + kWithinExit * s, b + kTwiceArea * s};
 }
 
 }  // namespace convray::accel
