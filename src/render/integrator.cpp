@@ -143,9 +143,12 @@ Vec3 Integrator::shade(const Ray& ray, const Crossing& crossing, const RayState&
   hit.entering = glm::dot(ray.direction, crossing.normal) < 0.0;
   // Seen from within the solid, a surface wears its interior_texture when it has one.
   const SurfaceInfo* surface = crossing.surface;
-  const scene::TexturePtr& worn =
-      surface && !hit.entering && surface->interior_texture ? surface->interior_texture
-      : surface                                              ? surface->texture
+  // A plain pointer: the conditional with nullptr made a temporary copy of the shared_ptr,
+  // whose count both render threads then raised and lowered for every shaded point (the
+  // same texture's count, one cache line between two cores: an eighth of the floor's time).
+  const scene::Texture* worn =
+      surface && !hit.entering && surface->interior_texture ? surface->interior_texture.get()
+      : surface                                              ? surface->texture.get()
                                                              : nullptr;
   const scene::Texture& texture = worn ? *worn : fallback_texture();
   return shade_texture(texture, crossing.normal, hit, state, stats);
