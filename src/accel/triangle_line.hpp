@@ -3,8 +3,9 @@
 // (implicit/) sets up for every triangle it reaches, made where the span is made. The exact
 // spans' SIMD batch (TriangleSpanBatch) has the corners in its lanes and computes the same
 // products for the prism and the corner balls; writing these terms beside the spans costs a
-// few stores per lane, where the march computed them again one triangle at a time (at R = 5
-// a ninth of a render: docs/benchmarks.md, sixteenth step). The scalar twins below compute
+// few stores per lane, where the march computed them again one triangle at a time (with the
+// area from the triangle's frame, a cache miss): 10 % of the soup's render, 14 % at R = 5
+// (docs/benchmarks.md, sixteenth step). The scalar twins below compute
 // them with the batch's operations in its order, to the bit (tests compare).
 #include <cstddef>
 #include <vector>

@@ -269,7 +269,6 @@ field::FieldSample ClusterField::evaluate(double t) {
   add_members_entered_by(t);
   const Vec3 p = ray_.at(t);
   field::FieldSample sum;
-  [[maybe_unused]] const double s = t - origin_t_;
   for (size_t k = 0; k < batches_used_; ++k) {
     Batch& b = batches_[k];
     // Every lane is written and the count moves on where it belongs: a branch per lane (in
@@ -295,7 +294,7 @@ field::FieldSample ClusterField::evaluate(double t) {
       // Wholly inside: the triangle's exact quartic in s, summed in the lanes' order.
       field::LineQuartic quartics;
       for (uint32_t lane : inside_lanes) quartics.add(quartic(b, lane), 1.0);
-      sum.value += strength * quartics.value(s);
+      sum.value += strength * quartics.value(t - origin_t_);
       if (clipped_count > 0) sum.value += strength * clipped_value(b, clipped_lanes, p, radius);
     } else {
       // The batch's cheap path for wholly inside triangles is tried only on the lanes known to
