@@ -328,11 +328,13 @@ bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepReque
   const Ray& ray = request.ray;
   const RootMode mode = request.mode;
   thread_local std::vector<accel::SupportInterval> intervals;
-  // The triangles' terms along the ray, made with their spans, for the window march.
+  // The triangles' terms along the ray, made with their spans, for the window march (the
+  // fits, the paper's tracer, have no use for them).
   thread_local accel::TriangleLineTable lines;
   intervals.clear();
   lines.clear();
-  surface.index->intersect(ray.origin, ray.direction, tmin, tmax, intervals, &lines);
+  surface.index->intersect(ray.origin, ray.direction, tmin, tmax, intervals,
+                           surface.tracer == Tracer::fits ? nullptr : &lines);
   // Fit each support's crossing whole: its ends are the zeros the paper's fit relies on.
   stats.primitives += intervals.size();
   if (intervals.empty()) return false;

@@ -153,21 +153,14 @@ void ClusterField::add_member(const accel::SupportInterval& iv) {
   }
   const uint32_t triangle = iv.primitive - s_.triangle_base;
   const Impl::Group& group = s_.group_of(triangle);
-  const field::Triangle& corners = s_.triangles[triangle];
-  const bool has_terms = iv.terms != accel::SupportInterval::kNoTerms;
   by_table_ = by_table_ && !(group.strength < 0.0);
   if (by_table_) {
     down_.add(iv.enter, iv.exit,
-              has_terms ? LineCurvature::triangle_down_terms(lines_.twice_area(iv.terms),
-                                                             group.strength, group.radius,
-                                                             lines_.reach(iv.terms))
-                        : LineCurvature::triangle_down_terms(corners, s_.frames[triangle],
-                                                             group.strength, group.radius, ray_));
+              LineCurvature::triangle_down_terms(lines_.twice_area(iv.terms), group.strength,
+                                                 group.radius, lines_.reach(iv.terms)));
   }
   add_triangle(batch_for(group), triangle, iv.enter, iv.exit,
-               has_terms ? lines_.corners_within(iv.terms)
-                         : accel::corners_within(ray_.origin, ray_.direction, corners,
-                                                 group.radius));
+               lines_.corners_within(iv.terms));
 }
 
 // Every member's whole LineCurvature, for the upward bounds (asked only above T, after a

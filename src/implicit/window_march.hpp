@@ -31,9 +31,9 @@ namespace convray::implicit {
 
 // Appends the roots of F = T in [tmin, tmax] that `mode` asks for. `cluster` holds the
 // supports crossing the ray there, sorted by entry (every primitive whose support meets the
-// ray in [tmin, tmax]); `lines` holds the rows their `terms` name (a triangle's without one
-// is made here). With RootMode::first and `first_gradient`, the exact gradient at the root is
-// put there. RootMode::any appends a point past the first sign change, unrefined.
+// ray in [tmin, tmax]); `lines` holds the rows their `terms` name, which every triangle's
+// interval must have (SupportIndex::intersect with a TriangleLineTable). With RootMode::first
+// and `first_gradient`, the exact gradient at the root is put there. RootMode::any appends a point past the first sign change, unrefined.
 void march_cluster(const ConvolutionSurface::Impl& surface, const Ray& ray,
                    std::span<const accel::SupportInterval> cluster,
                    const accel::TriangleLineTable& lines, double tmin, double tmax,
