@@ -540,20 +540,30 @@ Marcher::Step Marcher::step_from(const Value& a, double to, double min_step,
   // window's own bound is (a receding prediction might let a longer window pass it after
   // all; the own bound, smaller, is then asked instead).
   bool quick_may_fit = has_quick_bound(a.g);
+  // Where F moves towards T (or no chord is known yet) only the bound itself can let a window
+  // through, and each bound grows with the window (more members, each one's bound over a
+  // longer window at least as large): one that already fails times the next window's square
+  // is not weighed again.
+  const bool predicts = slope * a.g > 0.0;
+  double last_quick = 0.0, last_own = 0.0;
+  const auto fails_anyway = [&](double last, double window) {
+    return !predicts && last * window * window >= 8.0 * gap;
+  };
   for (double window = std::min(2.0 * min_step, max_step);;
        window = std::min(2.0 * window, max_step)) {
     const double end = std::min(to, a.t + window);
     Bend bend;
     const auto fits = [&](bool quick) {
       bend = {bend_towards_threshold(a.t, end, a.g, quick), !quick};
+      (quick ? last_quick : last_own) = bend.value;
       if (bend.value * window * window < 8.0 * gap) return true;
-      if (!(slope * a.g > 0.0)) return false;  // F moves away from T (on either side)
+      if (!predicts) return false;  // F moves away from T (on either side)
       // A prediction, not a bound (the chord bound is checked on the real sample): F >= 0
       // where strengths are positive, so it falls no further than g = -1.
       return chord_excluded(a, {end, std::max(-1.0, a.g + slope * (end - a.t))}, bend.value);
     };
-    if (quick_may_fit && !fits(true)) quick_may_fit = false;
-    if (!quick_may_fit && !fits(false)) return best;
+    if (quick_may_fit && (fails_anyway(last_quick, window) || !fits(true))) quick_may_fit = false;
+    if (!quick_may_fit && (fails_anyway(last_own, window) || !fits(false))) return best;
     best = {window, bend};
     if (window >= max_step || end >= to) return best;
   }
