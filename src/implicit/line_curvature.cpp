@@ -101,7 +101,11 @@ LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFr
   hi_ = extent.hi;
   mean_ = extent.mean;
   var_ = extent.var;
-  down_anywhere_ = triangle_down_anywhere(weight_, measure_, r2_, limit_);
+  // The plane's slope along the line sets the downward limit (and the table's twin takes it
+  // from the same terms).
+  if (triangle_) prepare_triangle();
+  down_limit_ = triangle_down_limit(reach_.height[1]);
+  down_anywhere_ = triangle_down_anywhere(weight_, measure_, r2_, down_limit_);
 }
 
 void LineCurvature::prepare_triangle() const {
@@ -113,8 +117,9 @@ double LineCurvature::area_within(double a, double b) const {
   if (!prepared_) prepare_triangle();
   const auto& h = reach_.height;
   const auto& o = reach_.outside;
-  return triangle_area_within(radius_, measure_, h[0], h[1], o[0][0], o[0][1], o[1][0], o[1][1],
-                              o[2][0], o[2][1], a, b);
+  return triangle_area_within(radius_, measure_,
+                              triangle_plane_nearest(h[0], h[1], o[0][0], o[0][1], o[1][0],
+                                                     o[1][1], o[2][0], o[2][1], a, b));
 }
 
 double LineCurvature::bend_down(double a, double b) const {
@@ -122,14 +127,14 @@ double LineCurvature::bend_down(double a, double b) const {
   if (!prepared_) prepare_triangle();
   const auto& h = reach_.height;
   const auto& o = reach_.outside;
-  return triangle_down_bend(weight_, radius_, r2_, measure_, limit_, h[0], h[1], o[0][0],
+  return triangle_down_bend(weight_, radius_, r2_, measure_, down_limit_, h[0], h[1], o[0][0],
                             o[0][1], o[1][0], o[1][1], o[2][0], o[2][1], reach_.along[0],
                             reach_.along[1], a, b);
 }
 
 LineCurvature::DownTerms LineCurvature::down_terms() const {
   if (triangle_ && !prepared_) prepare_triangle();
-  return {weight_, radius_, r2_, measure_, limit_, down_anywhere_, triangle_, reach_};
+  return {weight_, radius_, r2_, measure_, down_limit_, down_anywhere_, triangle_, reach_};
 }
 
 LineCurvature::DownTerms LineCurvature::triangle_down_terms(const field::Triangle& tri,

@@ -44,12 +44,16 @@ scene::ConvolutionObject one_of_each(std::mt19937_64& rng) {
   return o;
 }
 
+// The central difference's step: it is a weighted mean of f'' over [t - h, t + h], so a bound
+// it is held to must cover that stretch (the bounds hold point by point).
+constexpr double kDifferenceStep = 1e-4;
+
 // f'' along the ray at t by a central difference (the kernel's second derivative jumps where
 // the line leaves a support, where a difference sees a value between the two sides: still
 // within the bounds of both).
 double second_difference(const ConvolutionSurface::Impl& s, uint32_t id, const Ray& ray,
                          double t) {
-  const double h = 1e-4;
+  const double h = kDifferenceStep;
   return (s.value(id, ray.at(t + h)) - 2.0 * s.value(id, ray.at(t)) + s.value(id, ray.at(t - h))) /
          (h * h);
 }
@@ -68,7 +72,8 @@ TEST(LineCurvature, BoundsHoldOverRandomWindowsForEveryKind) {
         const Vec3 near = 1.5 * unit(rng) * random_unit(rng);
         const Ray ray{near - 2.0 * random_unit(rng), random_unit(rng)};
         const double a = 4.0 * unit(rng), b = a + 0.8 * unit(rng) * unit(rng);
-        const CurvatureBounds bounds = LineCurvature(s, id, ray).over(a, b);
+        const CurvatureBounds bounds =
+            LineCurvature(s, id, ray).over(a - kDifferenceStep, b + kDifferenceStep);
         ASSERT_GE(bounds.up, 0.0);
         ASSERT_GE(bounds.down, 0.0);
         for (int k = 0; k <= 4; ++k) {
@@ -160,13 +165,58 @@ TEST(LineCurvature, WideTriangleAgainstThePlanesClosedForm) {
   for (int line = 0; line < 3000; ++line) {
     const Ray ray{{u(rng), u(rng), -2.0 * R}, random_unit(rng)};
     const double a = std::abs(u(rng)), b = a + 0.5 * R * std::abs(u(rng));
-    const CurvatureBounds bounds = LineCurvature(s, id, ray).over(a, b);
+    const CurvatureBounds bounds =
+        LineCurvature(s, id, ray).over(a - kDifferenceStep, b + kDifferenceStep);
     for (double t : {a, 0.5 * (a + b), b}) {
       const double second = second_difference(s, id, ray, t);
       EXPECT_LE(second, bounds.up * (1.0 + 1e-4) + 1e-6) << "line " << line;
       EXPECT_GE(second, -bounds.down * (1.0 + 1e-4) - 1e-6) << "line " << line;
     }
   }
+}
+
+// The integral over the whole plane of how far the kernel bends down along u at height h
+// (R = 1 units times 1/R^2 and R^2 cancel): [4 (1 - s) - 8 (u.x)^2]^+ over the disk where the
+// ball meets the plane, by the midpoint rule in polar coordinates around the foot.
+double plane_downward_bend_by_quadrature(double h, const Vec3& u) {
+  const int radial = 600, angular = 1200;
+  const double rho = std::sqrt(1.0 - h * h);
+  double sum = 0.0;
+  for (int i = 0; i < radial; ++i) {
+    const double r = (i + 0.5) * rho / radial;
+    for (int j = 0; j < angular; ++j) {
+      const double theta = (j + 0.5) * 2.0 * kPi / angular;
+      const Vec3 x(-r * std::cos(theta), -r * std::sin(theta), h);  // p - q, p above the foot
+      const double s = glm::dot(x, x), ux = glm::dot(u, x);
+      sum += std::max(0.0, 4.0 * (1.0 - s) - 8.0 * ux * ux) * r;
+    }
+  }
+  return sum * (rho / radial) * (2.0 * kPi / angular);
+}
+
+// Near the middle of a triangle far wider than R, the downward bound is the plane's own:
+// the whole plane's downward bend at the window's height (triangle_down_limit's closed form),
+// which quadrature confirms for lines from along the normal to along the plane. It is what
+// the plane's field reaches along the normal at h = 0 (-2 pi), and along the plane a line
+// that grazes a surface sees 1 / sqrt(3) of it.
+TEST(LineCurvature, WideTrianglesDownwardBoundIsThePlanesByQuadrature) {
+  const double R = 1.0;
+  const ConvolutionSurface surface(wide_triangle(R));
+  const ConvolutionSurface::Impl& s = surface.impl();
+  const uint32_t id = s.triangle_base;
+  for (double normal_part : {0.0, 0.3, 0.6, 0.9, 1.0}) {
+    const Vec3 u(std::sqrt(1.0 - normal_part * normal_part), 0.0, normal_part);
+    for (double h : {0.0, 0.2, 0.45}) {
+      // The line passes height h above the foot (0, -0.5, 0) at t = 1.
+      const Ray ray{Vec3(0.0, -0.5, h) - u, u};
+      const double down = LineCurvature(s, id, ray).down(1.0, 1.0);
+      const double quadrature = plane_downward_bend_by_quadrature(h, u);
+      EXPECT_NEAR(down, quadrature, 2e-3 * 2.0 * kPi) << "u_n " << normal_part << ", h " << h;
+    }
+  }
+  const Ray along_plane{{-2.0, -0.5, 0.0}, {1.0, 0.0, 0.0}};
+  EXPECT_NEAR(LineCurvature(s, id, along_plane).down(2.0, 2.0), 2.0 * kPi / std::sqrt(3.0),
+              1e-12);
 }
 
 // The kernel bends down along u only where (1 - s) > 2 (u.x)^2 / R^2, which needs
@@ -236,7 +286,8 @@ TEST(LineCurvature, WideTrianglesTilingAPlaneCountForTheirPartOfTheDisk) {
     double second[3] = {0.0, 0.0, 0.0};
     const double at[3] = {a, 0.5 * (a + b), b};
     for (uint32_t id = s.triangle_base; id < surface.primitive_count(); ++id) {
-      const CurvatureBounds c = LineCurvature(s, id, ray).over(a, b);
+      const CurvatureBounds c =
+          LineCurvature(s, id, ray).over(a - kDifferenceStep, b + kDifferenceStep);
       sum.up += c.up;
       sum.down += c.down;
       for (int k = 0; k < 3; ++k) second[k] += second_difference(s, id, ray, at[k]);
