@@ -38,7 +38,9 @@
 // there, spends that evaluation on a last Newton step (accepted only if it is within the
 // tolerance, else the bracket is closed after all) instead of on the evaluations that close
 // the bracket. On the dragon at R = 1 its roots took 3.4 evaluations instead of 3.9, one in
-// 10,000 closing the bracket after the Newton check.
+// 10,000 closing the bracket after the Newton check. `landing` (absolute, in t) lands
+// earlier, once the next point's predicted error is below it: for a caller whose Newton step
+// squares that error (the window march's first hit, kLanding there).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -53,7 +55,7 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
                       double guess = std::numeric_limits<double>::quiet_NaN(),
                       double guess_slope = std::numeric_limits<double>::quiet_NaN(),
                       double tolerance = 0.0, double residual = 0.0,
-                      bool close_bracket = true) {
+                      bool close_bracket = true, double landing = 0.0) {
   const bool lo_negative = g_lo < 0.0;
   double t = guess > lo && guess < hi ? guess : (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
   double last_t = 0.0, last_g = 0.0;  // the previous point evaluated, for the interpolation
@@ -97,8 +99,9 @@ double refine_bracket(double lo, double hi, double g_lo, double g_hi, Function&&
     // Left open, a step that shrank fast enough is taken as landing within the
     // resolution: with superlinear convergence the next point's error is about
     // step * (step / previous_step) (see the comment at the top).
-    const bool lands_within = !close_bracket && have_last && step < previous_step &&
-                              step * step < kLandingFraction * resolution * previous_step;
+    const bool lands_within =
+        !close_bracket && have_last && step < previous_step &&
+        step * step < std::max(kLandingFraction * resolution, landing) * previous_step;
     if (step < 0.5 * resolution || lands_within) {
       if (!close_bracket) return std::clamp(next, lo, hi);
       // Converged to within the resolution: close the bracket on the root's side of t (a

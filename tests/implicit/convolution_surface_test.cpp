@@ -135,7 +135,9 @@ TEST_P(EveryFastTracer, AgreesWithTheReferenceTracerOnRandomSkeletons) {
       worst_normal = std::max(worst_normal, glm::length(fast->normal - exact->normal));
     }
   }
-  EXPECT_LE(worst_normal, 1e-9);
+  // The window march's normal is the exact gradient at its refiner's landing point, within
+  // about 1e-5 R of the hit (window_march.cpp's kLanding): within 1e-5 of a radian.
+  EXPECT_LE(worst_normal, GetParam() == Tracer::fast ? 2e-5 : 1e-9);
   RecordProperty("worst_distance_over_R", std::to_string(worst));
   std::printf("rays %d, hits %d, hit/miss disagreements %d, worst |dt|/R %.3g\n", rays, hits,
               disagreements, worst);
