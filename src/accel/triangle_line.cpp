@@ -17,6 +17,7 @@ TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
   TriangleReach reach;
   reach.height[0] = glm::dot(origin - triangle.a, n);
   reach.height[1] = glm::dot(direction, n);
+  reach.tilt = plane_tilt(reach.height[1]);
   double along[3];
   for (int k = 0; k < 3; ++k) {
     const Vec3& v = corner[k];
@@ -69,7 +70,8 @@ TriangleLineTable::Columns TriangleLineTable::columns() {
   const size_t s = stride_;
   return {b + kH0 * s,  b + kH1 * s,  b + kO00 * s, b + kO01 * s,         b + kO10 * s,
           b + kO11 * s, b + kO20 * s, b + kO21 * s, b + kLo * s,          b + kHi * s,
-          b + kWithinEnter * s,       b + kWithinExit * s, b + kTwiceArea * s};
+          b + kWithinEnter * s,       b + kWithinExit * s, b + kTwiceArea * s,
+          b + kTilt * s};
 }
 
 }  // namespace convray::accel

@@ -7,6 +7,8 @@
 // area from the triangle's frame, a cache miss): 10 % of the soup's render, 14 % at R = 5
 // (docs/benchmarks.md, sixteenth step). The scalar twins below compute
 // them with the batch's operations in its order, to the bit (tests compare).
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -25,7 +27,14 @@ struct TriangleReach {
   double outside[3][2] = {};      // past edge k (corner k to k + 1), in the plane: o0 + o1 t
                                   // (<= 0: on the triangle's side of its line)
   double along[2] = {0.0, 0.0};   // [lo, hi]
+  // 1 / sqrt(3 - 2 h1^2), h1 the slope of the height (the line's cosine to the normal): the
+  // factor of the march's downward limit for the triangle's plane (implicit/triangle_reach.hpp's
+  // triangle_down_limit), a square root and a division per member that the lanes make cheaply.
+  double tilt = 1.0 / std::sqrt(3.0);
 };
+
+// The tilt of a line whose height above a plane has slope h1 (TriangleReach::tilt).
+inline double plane_tilt(double h1) { return 1.0 / std::sqrt(3.0 - 2.0 * std::min(h1 * h1, 1.0)); }
 
 // The scalar twins (direction of unit length).
 TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
@@ -50,7 +59,8 @@ class TriangleLineTable {
     const size_t s = stride_;
     return {{r[kH0 * s], r[kH1 * s]},
             {{r[kO00 * s], r[kO01 * s]}, {r[kO10 * s], r[kO11 * s]}, {r[kO20 * s], r[kO21 * s]}},
-            {r[kLo * s], r[kHi * s]}};
+            {r[kLo * s], r[kHi * s]},
+            r[kTilt * s]};
   }
   Span corners_within(size_t row) const {
     return {buffer_[kWithinEnter * stride_ + row], buffer_[kWithinExit * stride_ + row]};
@@ -59,17 +69,18 @@ class TriangleLineTable {
   // made with fused multiply-adds, for the field's batch).
   double twice_area(size_t row) const { return buffer_[kTwiceArea * stride_ + row]; }
 
-  // The columns, for the batch: height, outside (edge-major), along, corners within, area.
+  // The columns, for the batch: height, outside (edge-major), along, corners within, area,
+  // tilt.
   struct Columns {
     double *h0, *h1, *o00, *o01, *o10, *o11, *o20, *o21, *lo, *hi, *within_enter, *within_exit,
-        *twice_area;
+        *twice_area, *tilt;
   };
   Columns columns();
 
  private:
   enum Column {
     kH0, kH1, kO00, kO01, kO10, kO11, kO20, kO21, kLo, kHi, kWithinEnter, kWithinExit,
-    kTwiceArea, kColumns
+    kTwiceArea, kTilt, kColumns
   };
   size_t size_ = 0;
   size_t stride_ = 0;  // from one column to the next in buffer_: room for rows, and a stagger

@@ -215,6 +215,7 @@ void TriangleSpanBatch::compute_lanes(const Vec3& origin, const Vec3& direction,
       terms.within_enter[k] = most(most(ball_a.span.enter, ball_b.span.enter), ball_e.span.enter);
       terms.within_exit[k] = least(least(ball_a.span.exit, ball_b.span.exit), ball_e.span.exit);
       terms.twice_area[k] = p.n_length;
+      terms.tilt[k] = plane_tilt(p.h1);
     }
   }
 }
@@ -228,7 +229,7 @@ size_t TriangleSpanBatch::compute(const Vec3& origin, const Vec3& direction, dou
   const size_t first = table.grow(enter_.size());
   TriangleLineTable::Columns c = table.columns();
   for (double** column : {&c.h0, &c.h1, &c.o00, &c.o01, &c.o10, &c.o11, &c.o20, &c.o21, &c.lo,
-                          &c.hi, &c.within_enter, &c.within_exit, &c.twice_area}) {
+                          &c.hi, &c.within_enter, &c.within_exit, &c.twice_area, &c.tilt}) {
     *column += first;
   }
   compute_lanes<true>(origin, direction, radius, c);

@@ -104,7 +104,7 @@ LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFr
   // The plane's slope along the line sets the downward limit (and the table's twin takes it
   // from the same terms).
   if (triangle_) prepare_triangle();
-  down_limit_ = triangle_down_limit(reach_.height[1]);
+  down_limit_ = triangle_down_limit(reach_);
   down_anywhere_ = triangle_down_anywhere(weight_, measure_, r2_, down_limit_);
 }
 

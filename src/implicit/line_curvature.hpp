@@ -93,7 +93,7 @@ class LineCurvature {
     // As the constructor sets them (a triangle without a finite area has no field).
     const double weight = std::abs(strength), r2 = radius * radius;
     const bool area = twice_area > 0.0 && twice_area < kInfinity;
-    const double limit = triangle_down_limit(area ? reach.height[1] : 0.0);
+    const double limit = triangle_down_limit(area ? reach : TriangleReach{});
     const double measure = area ? 0.5 * twice_area : 0.0;
     return {weight, radius, r2, measure, limit,
             triangle_down_anywhere(weight, measure, r2, limit), area,

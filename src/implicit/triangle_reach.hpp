@@ -78,10 +78,8 @@ inline double triangle_nearest_along(double radius, double lo, double hi, double
 // positive on an ellipse, whose integral is 2 pi A^2 / sqrt(q) with q = 3 - 2 u_n^2 and
 // A = 1 - 3 h^2 / q. Along the normal that is 2 pi (1 - 3 h^2)^2 (2 pi in the plane); a line
 // along the plane, 2 pi (1 - h^2)^2 / sqrt(3): near a surface, the rays that graze it.
-inline double triangle_down_limit(double height_slope) {
-  const double q = 3.0 - 2.0 * std::min(height_slope * height_slope, 1.0);  // u_n^2 <= 1
-  return 2.0 * kPi / std::sqrt(q);
-}
+// 1 / sqrt(q) is the reach's tilt, made with the line's terms.
+inline double triangle_down_limit(const TriangleReach& reach) { return 2.0 * kPi * reach.tilt; }
 
 // How far a triangle's field (strength `weight` >= 0) may bend down over [a, b]. Along a unit
 // u the kernel bends by u.H.u = 8 (u.x)^2 / R^4 - 4 (1 - s) / R^2, so it bends down only

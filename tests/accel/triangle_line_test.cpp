@@ -67,6 +67,7 @@ TEST(TriangleLineTable, BatchRowsMatchTheScalarTwinsToTheBit) {
           expect_same_bits(row.outside[edge][i], twin.outside[edge][i], what);
         }
       }
+      expect_same_bits(row.tilt, twin.tilt, what);
       const Span within = table.corners_within(first + k);
       const Span within_twin = corners_within(o, d, triangles[k], r);
       ASSERT_EQ(within.empty(), within_twin.empty()) << what;
