@@ -93,28 +93,20 @@ LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFr
       has_moments_(true),
       limit_(2.0 * kPi),
       flipped_(strength < 0.0),
-      triangle_(frame.has_area()),  // no area, no field
-      triangle_corners_(&tri),
-      ray_(&ray) {
+      triangle_(frame.has_area()) {  // no area, no field
   const Extent extent = extent_along(ray, std::array<Vec3, 3>{tri.a, tri.b, tri.c});
   lo_ = extent.lo;
   hi_ = extent.hi;
   mean_ = extent.mean;
   var_ = extent.var;
-  // The plane's slope along the line sets the downward limit (and the table's twin takes it
-  // from the same terms).
-  if (triangle_) prepare_triangle();
+  // The plane's tilt along the line sets the downward limit (the table's twin takes it from
+  // the same terms).
+  if (triangle_) reach_ = accel::triangle_reach(ray.origin, ray.direction, tri);
   down_limit_ = triangle_down_limit(reach_);
   down_anywhere_ = triangle_down_anywhere(weight_, measure_, r2_, down_limit_);
 }
 
-void LineCurvature::prepare_triangle() const {
-  reach_ = accel::triangle_reach(ray_->origin, ray_->direction, *triangle_corners_);
-  prepared_ = true;
-}
-
 double LineCurvature::area_within(double a, double b) const {
-  if (!prepared_) prepare_triangle();
   const auto& h = reach_.height;
   const auto& o = reach_.outside;
   return triangle_area_within(radius_, measure_,
@@ -124,7 +116,6 @@ double LineCurvature::area_within(double a, double b) const {
 
 double LineCurvature::bend_down(double a, double b) const {
   if (!triangle_) return weight_ * 4.0 * measure_ / r2_;
-  if (!prepared_) prepare_triangle();
   const auto& h = reach_.height;
   const auto& o = reach_.outside;
   return triangle_down_bend(weight_, radius_, r2_, measure_, down_limit_, h[0], h[1], o[0][0],
@@ -133,7 +124,6 @@ double LineCurvature::bend_down(double a, double b) const {
 }
 
 LineCurvature::DownTerms LineCurvature::down_terms() const {
-  if (triangle_ && !prepared_) prepare_triangle();
   return {weight_, radius_, r2_, measure_, down_limit_, down_anywhere_, triangle_, reach_};
 }
 

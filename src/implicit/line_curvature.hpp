@@ -55,7 +55,6 @@ struct CurvatureBounds {
 // A primitive's curvature along one line, prepared once per ray for any window of it.
 class LineCurvature {
  public:
-  // `ray` must outlive this (a triangle's plane and edges are measured against it lazily).
   LineCurvature(const ConvolutionSurface::Impl& surface, uint32_t id, const Ray& ray);
   // A triangle of a mesh with this strength and radius (what the surface's id gives).
   // `frame` gives its area (computed once per mesh).
@@ -104,9 +103,6 @@ class LineCurvature {
   // The same for the skeleton's integral of K with a positive strength.
   double bend_up(double a, double b) const;
   double bend_down(double a, double b) const;
-  // The plane and edges of the triangle, along the line: made when first asked for (most
-  // windows never need them).
-  void prepare_triangle() const;
   // bend_down's largest value: the triangle's whole area within reach, s >= 0.
   static double triangle_down_anywhere(double weight, double measure, double r2, double limit) {
     return weight * std::min(4.0 * measure / r2, limit);
@@ -128,12 +124,10 @@ class LineCurvature {
   double down_anywhere_ = kInfinity;  // bend_down's bound over any window
   bool flipped_ = false;           // a negative strength swaps the two sides
   // Triangles: the distance to the plane and the outward distances past each edge of the
-  // foot of p(t), each linear in t: value at t = 0 and slope.
+  // foot of p(t), each linear in t (value at t = 0 and slope), and the plane's tilt, which
+  // the downward limit needs from the start.
   bool triangle_ = false;
-  const field::Triangle* triangle_corners_ = nullptr;
-  const Ray* ray_ = nullptr;
-  mutable bool prepared_ = false;
-  mutable TriangleReach reach_;
+  TriangleReach reach_;
 };
 
 // Inline: the march sums it over every primitive near each window it weighs.
