@@ -34,7 +34,9 @@ struct TriangleReach {
 };
 
 // The tilt of a line whose height above a plane has slope h1 (TriangleReach::tilt).
-inline double plane_tilt(double h1) { return 1.0 / std::sqrt(3.0 - 2.0 * std::min(h1 * h1, 1.0)); }
+inline double plane_tilt(double h1) {
+  return 1.0 / std::sqrt(3.0 - 2.0 * std::min(h1 * h1, 1.0));
+}
 
 // The scalar twins (direction of unit length).
 TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,

@@ -32,10 +32,11 @@
 // ball, which meets the triangle's plane in a disk of radius rho <= sqrt(R^2 - h^2) (h the
 // window's least height); where the foot lies a distance e outside one of the triangle's
 // edges, the triangle keeps to the disk's segment beyond that edge's line, of area at most
-// 2 (rho - e) sqrt(rho^2 - e^2) (its bounding rectangle). Where triangles are wider than R, the few that tile the disk then count for
-// their part of it each, not for the whole disk each. Downwards, the weight 4 (1 - s) / R^2
-// is also at most its value at the triangle's nearest possible point (the window's least
-// height above the plane and least distance past an edge).
+// 2 (rho - e) sqrt(rho^2 - e^2) (its bounding rectangle). Where triangles are wider than R,
+// the few that tile the disk then count for their part of it each, not for the whole disk
+// each. Downwards, the weight 4 (1 - s) / R^2 is also at most its value at the triangle's
+// nearest possible point (the window's least height above the plane and least distance past
+// an edge).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
