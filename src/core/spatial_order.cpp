@@ -1,11 +1,12 @@
 #include "core/spatial_order.hpp"
 
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
+
+#include "core/keyed_sort.hpp"
 
 namespace convray {
 namespace {
@@ -50,9 +51,8 @@ std::vector<uint32_t> spatial_order(std::span<const Vec3> points) {
     }
     keyed[i] = {key, uint32_t(i)};
   });
-  // (key, index) pairs are all distinct: the order is the same on any number of threads,
-  // ties in the given order.
-  tbb::parallel_sort(keyed.begin(), keyed.end());
+  // (key, index) pairs are all distinct, in index order: ties keep the given order.
+  sort_keyed(keyed);
   std::vector<uint32_t> order(points.size());
   for (size_t i = 0; i < keyed.size(); ++i) order[i] = keyed[i].second;
   return order;

@@ -1,13 +1,14 @@
 #include "implicit/repeated_triangles.hpp"
 
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
 #include <cstring>
 #include <optional>
 #include <utility>
+
+#include "core/keyed_sort.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -42,13 +43,12 @@ uint64_t hash_of(const Corners& key) {
 std::optional<DistinctTriangles> merge_repeated(std::span<const field::Triangle> triangles) {
   const size_t n = triangles.size();
   // (hash, index): equal keys adjacent, the indices ascending within a run (all pairs are
-  // distinct, so the parallel sort's order is the sequential one). On every core: a big
-  // mesh's start-up waits for this.
+  // distinct: one order). The hashes on every core: a big mesh's start-up waits for this.
   std::vector<std::pair<uint64_t, uint32_t>> order(n);
   tbb::parallel_for(size_t(0), n, [&](size_t i) {
     order[i] = {hash_of(canonical(triangles[i])), uint32_t(i)};
   });
-  tbb::parallel_sort(order.begin(), order.end());
+  sort_keyed(order);
   bool repeats = false;
   // Each triangle's first occurrence: within a run of equal hashes, the earliest equal key.
   std::vector<uint32_t> first(n);
