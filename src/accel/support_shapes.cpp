@@ -122,16 +122,34 @@ Vec3 smallest_ball_center(const field::Triangle& t) {
 BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radius) {
   const Vec3 centroid = (triangle.a + triangle.b + triangle.c) * (1.0 / 3.0);
   const double centroid_reach2 = corner_reach2(triangle, centroid);
-  const Vec3 center = smallest_ball_center(triangle);
-  const double reach2 = corner_reach2(triangle, center);
-  if (reach2 < centroid_reach2) return {center, std::sqrt(reach2) + radius};
-  return {centroid, std::sqrt(centroid_reach2) + radius};
+  const Vec3 smallest = smallest_ball_center(triangle);
+  const double smallest_reach2 = corner_reach2(triangle, smallest);
+  const bool smaller = smallest_reach2 < centroid_reach2;
+  BoundingBall ball{smaller ? smallest : centroid,
+                    std::sqrt(smaller ? smallest_reach2 : centroid_reach2) + radius,
+                    {0.0f, 0.0f, 0.0f},
+                    std::numeric_limits<float>::infinity()};
+  const Vec3 n = triangle_normal(triangle);
+  const double n_length = glm::length(n);
+  if (n_length > 0.0 && std::isfinite(n_length) && std::isfinite(ball.radius)) {
+    const Vec3 unit = n / n_length;
+    for (int axis = 0; axis < 3; ++axis) ball.normal[axis] = float(unit[axis]);
+    // The float normal strays from the unit one by under 1e-7 (heights within the ball by
+    // 1e-7 of its radius), and the centre lies off the plane by its rounding.
+    const double off_plane = std::abs(glm::dot(ball.center - triangle.a, unit));
+    ball.slab = std::nextafter(float(radius + off_plane + 1e-6 * ball.radius),
+                               std::numeric_limits<float>::infinity());
+  }
+  return ball;
 }
 
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius) {
   const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
-  if (!may_cross(origin, direction, triangle_bounding_ball(triangle, radius))) return {};
+  if (!may_cross(origin, direction, -kInfinity, kInfinity,
+                 triangle_bounding_ball(triangle, radius))) {
+    return {};
+  }
   Vec3 n = triangle_normal(triangle);
   const double n_length = glm::length(n);
   Span span{};

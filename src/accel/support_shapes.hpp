@@ -28,23 +28,45 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius);
 // A ball that holds the triangle's support: the smallest ball around the triangle (the
-// middle of its longest side for an obtuse one, else the circumcentre), grown by R.
+// middle of its longest side for an obtuse one, else the circumcentre), grown by R; and the
+// slab around the triangle's plane through its centre that holds the support as well (half
+// width R, grown to cover the float normal and the centre's own height off the plane).
 struct BoundingBall {
   Vec3 center;
   double radius;
+  float normal[3];  // unit; zero where the triangle has no plane (the slab is then everything)
+  float slab;       // half width
 };
 BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radius);
-// A cheap test that the line may cross a support: it crosses the support's bounding ball
-// (false means the span is empty; a rounding slack keeps every grazing line in). No square
-// root: the Embree callbacks run it on every triangle whose box the line crosses, with the
-// balls made once per mesh. Inline: it runs on every candidate of every line query.
-inline bool may_cross(const Vec3& origin, const Vec3& direction, const BoundingBall& ball) {
+// A cheap test that the line may cross a support with some t in [tmin, tmax]: it crosses the
+// chunk of the line within the support's bounding ball and its slab (false means the span
+// there is empty; rounding slacks keep every grazing line in). No square root or division:
+// the Embree callbacks run it on every triangle whose box the line crosses, with the balls made
+// once per mesh. The ball alone left 37 % of the dragon's candidates at R = 1 with an empty
+// span and 8 % with a span outside the chunk (the soup 20 % and 9 %), each an exact span in
+// the batch for nothing. Inline: it runs on every candidate of every line query.
+inline bool may_cross(const Vec3& origin, const Vec3& direction, double tmin, double tmax,
+                      const BoundingBall& ball) {
   const Vec3 w = ball.center - origin;
   const double ww = glm::dot(w, w), along = glm::dot(w, direction);
   const double r2 = ball.radius * ball.radius;
   // The squared distance to the line loses up to a few ulps of |w|^2 to cancellation, and the
-  // ball's radius was rounded: the slack covers both many times over.
-  return ww - along * along <= r2 + 1e-12 * (ww + r2);
+  // ball's radius was rounded: the slack covers both many times over. half2: the squared
+  // half chord.
+  const double half2 = r2 + 1e-12 * (ww + r2) - (ww - along * along);
+  if (!(half2 >= 0.0)) return false;
+  // The chord [along - half, along + half] against [tmin, tmax].
+  const double before = tmin - along, past = along - tmax;
+  if ((before > 0.0 && before * before > half2) || (past > 0.0 && past * past > half2)) {
+    return false;
+  }
+  // The slab: the line's height above the plane at the chord's middle is its least over the
+  // chord less |slope| half, where the slope does not take it through the plane.
+  const Vec3 n(ball.normal[0], ball.normal[1], ball.normal[2]);
+  const double slope = glm::dot(direction, n), height = along * slope - glm::dot(w, n);
+  // Within the ball |w| <= |along| + radius: the height's rounding is far below 1e-12 of it.
+  const double excess = std::abs(height) - ball.slab - 1e-12 * (std::abs(along) + ball.radius);
+  return !(excess > 0.0 && excess * excess > slope * slope * half2);
 }
 // Arc swept by a ball (a piece of a torus, not convex): a conservative interval, the ball
 // around the circle's centre of radius (arc radius + R) cut by the slab |height| <= R.

@@ -111,14 +111,16 @@ TEST(SupportShapes, SpansAreExactForSpheresCapsulesAndTriangles) {
   EXPECT_GT(hits, 150);  // both outcomes are exercised
 }
 
-// The bounding ball's test must keep every line that crosses the support, grazing ones and
-// far origins too (where the distance to the line loses digits to cancellation): the exact
-// span against it, on lines aimed at the support's edge.
+// The bounding ball's test must keep every line that crosses the support within the asked
+// range of t, grazing ones and far origins too (where the distance to the line loses digits to
+// cancellation): the exact span against it, on lines aimed at the support's edge, over random
+// ranges that overlap the span by little or miss it by little. It rejects lines outside the
+// ball, outside the slab around the plane, and ranges beside the chord.
 TEST(SupportShapes, BoundingBallKeepsEveryCrossingLine) {
   std::mt19937_64 rng(14);
   std::uniform_real_distribution<double> radius(0.01, 0.8), unit(0.0, 1.0);
-  int crossings = 0, grazing = 0, rejected = 0;
-  for (int trial = 0; trial < 20000; ++trial) {
+  int crossings = 0, grazing = 0, rejected = 0, in_range = 0, beside = 0;
+  for (int trial = 0; trial < 40000; ++trial) {
     const double r = radius(rng);
     const field::Triangle t{random_point(rng, 1), random_point(rng, 1),
                             trial % 7 ? random_point(rng, 1) : Vec3(0.0)};
@@ -129,16 +131,54 @@ TEST(SupportShapes, BoundingBallKeepsEveryCrossingLine) {
     const Vec3 through = q + side * (r * (0.9 + 0.2 * unit(rng)));
     const Vec3 o = through - std::pow(10.0, 4.0 * unit(rng)) * d;
     const Span exact = triangle_span(o, d, t, r);
-    const bool kept = may_cross(o, d, triangle_bounding_ball(t, r));
-    rejected += !kept;
+    const BoundingBall ball = triangle_bounding_ball(t, r);
+    const bool line_kept = may_cross(o, d, -kInfinity, kInfinity, ball);
+    rejected += !line_kept;
     if (exact.empty()) continue;
     ++crossings;
     grazing += exact.exit - exact.enter < 0.5 * r;  // a chord of a ball R: 0.03 R deep
-    EXPECT_TRUE(kept) << trial;
+    EXPECT_TRUE(line_kept) << trial;
+    // A range ending before the span (within 1e-3 R, or within three times the ball's radius),
+    // or starting after it, or overlapping it.
+    const double gap = (trial % 2 ? 1e-3 * r : 3.0 * ball.radius) * unit(rng);
+    const double tmin = trial % 3 == 0 ? exact.exit + gap : exact.enter - r * unit(rng);
+    const double tmax = trial % 3 == 1 ? exact.enter - gap : exact.exit + r * unit(rng);
+    const bool meets = tmin <= exact.exit && exact.enter <= tmax;
+    const bool kept = may_cross(o, d, tmin, tmax, ball);
+    in_range += meets;
+    beside += !meets && !kept;
+    if (meets) EXPECT_TRUE(kept) << trial;
   }
-  EXPECT_GT(crossings, 5000);
-  EXPECT_GT(grazing, 50);
-  EXPECT_GT(rejected, 100);  // and it does reject lines
+  EXPECT_GT(crossings, 10000);
+  EXPECT_GT(grazing, 100);
+  EXPECT_GT(in_range, 3000);
+  EXPECT_GT(rejected, 200);  // and it does reject lines
+  EXPECT_GT(beside, 100);    // and ranges
+}
+
+// Lines through the ball that keep more than R from the triangle's plane (parallel to it, or
+// crossing it outside the ball) are rejected by the slab; lines within it are kept.
+TEST(SupportShapes, BoundingBallSlabRejectsLinesFarFromThePlane) {
+  const double r = 0.1;
+  const field::Triangle t{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  const BoundingBall ball = triangle_bounding_ball(t, r);
+  ASSERT_GT(ball.radius, 0.7);
+  // Parallel to the plane at heights 0.2 and 0.09 through the ball's centre.
+  const Vec3 along = glm::normalize(Vec3(1, 1, 0));
+  EXPECT_FALSE(may_cross(ball.center + Vec3(0, 0, 0.2) - 5.0 * along, along, -kInfinity,
+                         kInfinity, ball));
+  EXPECT_TRUE(may_cross(ball.center + Vec3(0, 0, 0.09) - 5.0 * along, along, -kInfinity,
+                        kInfinity, ball));
+  EXPECT_TRUE(triangle_span(ball.center + Vec3(0, 0, 0.2) - 5.0 * along, along, t, r).empty());
+  EXPECT_FALSE(triangle_span(ball.center + Vec3(0, 0, 0.09) - 5.0 * along, along, t, r).empty());
+  // Steep lines cross the slab wherever they cross the ball.
+  EXPECT_TRUE(may_cross(ball.center - 5.0 * Vec3(0, 0, 1), Vec3(0, 0, 1), -kInfinity,
+                        kInfinity, ball));
+  // A zero-area triangle has no slab: only its ball.
+  const field::Triangle flat{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};
+  const BoundingBall line_ball = triangle_bounding_ball(flat, r);
+  EXPECT_TRUE(may_cross(line_ball.center + Vec3(0, 0, 0.5) - 5.0 * Vec3(1, 0, 0), Vec3(1, 0, 0),
+                        -kInfinity, kInfinity, line_ball));
 }
 
 // The bounding ball is the smallest around the triangle, grown by R: it holds every corner
