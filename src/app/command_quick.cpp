@@ -133,6 +133,7 @@ void print_stats(const QuickOptions& o, const implicit::Surface& surface,
       << "fits: " << trace.fits << (o.reference ? "" : " (window-march steps; spheres entered)") << "\n"
       << "subdivisions: " << trace.subdivisions << "\n"
       << "fallbacks: " << trace.fallbacks << "\n"
+      << "shadow rays settled inside: " << trace.shadows_settled << "\n"
       << "surface memory: " << number(double(bytes) / (1024.0 * 1024.0)) << " MiB ("
       << number(primitives ? double(bytes) / double(primitives) : 0.0) << " bytes per "
       << (primitives == model.triangles ? "triangle" : "primitive") << ")\n"

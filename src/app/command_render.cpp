@@ -98,7 +98,8 @@ void print_stats(const render::RenderStats& s, const PhaseTimes& t,
       << "rays: camera " << s.camera_rays << ", shadow " << s.shadow_rays << "\n"
       << "camera rays that hit: " << s.hits << "\n"
       << "field evaluations: " << s.trace.field_evaluations << ", roots: " << s.trace.roots
-      << ", fits: " << s.trace.fits << "\n"
+      << ", fits: " << s.trace.fits << ", shadow rays settled inside: " << s.trace.shadows_settled
+      << "\n"
       << "time parse: " << t.parse << " s\n"
       << "time build: " << t.build << " s\n"
       << "time render: " << t.render << " s\n"

@@ -15,6 +15,8 @@ struct TraceStats {
   uint64_t field_evaluations = 0;  // exact per-primitive field evaluations (or sphere terms)
   uint64_t roots = 0;              // roots found and polished on the exact field
   uint64_t fallbacks = 0;          // rays where the fast path handed over to exact tracing
+  uint64_t shadows_settled = 0;    // shadow rays found blocked by a ball known to lie inside
+                                   // the surface, without a search (implicit/inside_balls.hpp)
 
   TraceStats& operator+=(const TraceStats& o) {
     rays += o.rays;
@@ -24,6 +26,7 @@ struct TraceStats {
     field_evaluations += o.field_evaluations;
     roots += o.roots;
     fallbacks += o.fallbacks;
+    shadows_settled += o.shadows_settled;
     return *this;
   }
 };

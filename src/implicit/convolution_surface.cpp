@@ -3,11 +3,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "accel/support_shapes.hpp"
+#include "implicit/inside_balls.hpp"
 #include "implicit/reference_tracer.hpp"
 #include "implicit/repeated_triangles.hpp"
 #include "implicit/support_cache.hpp"
@@ -60,6 +62,8 @@ void take_prebuilt(accel::SupportSources& sources,
 
 ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCache* cache)
     : threshold(object.threshold) {
+  static std::atomic<uint64_t> surfaces_made{0};
+  serial = ++surfaces_made;
   if (!(threshold > 0.0) || !std::isfinite(threshold)) {
     throw std::invalid_argument("convolution object: the threshold must be positive and finite");
   }
@@ -67,6 +71,7 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
   auto note = [&](const scene::Weight& w, const char* what) {
     check_weight(w, what);
     min_radius = std::min(min_radius, w.radius);
+    nonnegative = nonnegative && w.strength >= 0.0;
   };
   for (const scene::PointComponent& c : object.points) {
     note(c.weight, "point");
@@ -329,8 +334,18 @@ bool ConvolutionSurface::occluded(const Ray& ray, double tmin, double tmax,
     // The contract asks for [tmin, tmax]; filter anyway, so a root just outside never shadows.
     return std::any_of(found.begin(), found.end(), [&](double t) { return t >= tmin && t <= tmax; });
   }
-  find_roots(*impl_, ray, tmin, tmax, RootMode::any, found, stats);
-  return !found.empty();
+  // A ball left by an earlier shadow ray of the run may settle it (inside_balls.hpp).
+  if (InsideBalls::settle(*impl_, ray, tmin, tmax)) {
+    ++stats.shadows_settled;
+    return true;
+  }
+  InsideBall inside;
+  const bool look = InsideBalls::worth_looking(*impl_);
+  find_roots(*impl_, ray, tmin, tmax, RootMode::any, found, stats, nullptr,
+             look ? &inside : nullptr);
+  if (found.empty()) return false;
+  InsideBalls::remember(*impl_, look ? &inside : nullptr);
+  return true;
 }
 
 }  // namespace convray::implicit

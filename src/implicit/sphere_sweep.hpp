@@ -30,6 +30,8 @@ struct SphereSweepRequest {
   // With RootMode first: where to put the exact gradient at the root, from the spheres that
   // the sweep has at hand there (no point query needed); may be null.
   std::optional<Vec3>* gradient = nullptr;
+  // With RootMode any: where to leave a ball inside the surface (find_roots); may be null.
+  InsideBall* inside = nullptr;
 };
 
 // Appends the roots in [tmin, tmax] of the field of sphere supports, ascending; with RootMode

@@ -47,6 +47,10 @@ struct ConvolutionSurface::Impl {
   uint32_t point_count = 0, segment_count = 0;
   double threshold = 1.0;
   double min_radius = 1.0;  // smallest support radius: the length scale of tolerances
+  bool nonnegative = true;  // no component has a negative strength: F only grows with each
+  // Distinct for every surface made in this process (thread-local caches key on it: a freed
+  // surface's address may be reused).
+  uint64_t serial = 0;
   // Nothing but spheres: every ray goes straight to the sphere sweep (sphere_sweep.hpp).
   bool spheres_only = false;
   // First-root searches gather the ray in chunks (surface_roots.cpp), where a line through the
@@ -103,6 +107,36 @@ struct ConvolutionSurface::Impl {
     const uint32_t i = id - triangle_base;
     const Group& g = group_of(i);
     return g.strength * field::triangle_value(p, triangles[i], g.radius);
+  }
+
+  // How far primitive `id`'s weighted field may bend down anywhere, along any direction: the
+  // kernel's Hessian has no eigenvalue below -4 / R^2 (radially -4 (1 - 3 r^2/R^2) / R^2,
+  // across -4 (1 - r^2/R^2) / R^2; a blob cylinder's kernel of the distance to its axis adds
+  // its slope times the distance's convex bend, no lower), so the field's is no lower than
+  // -4 / R^2 times |strength| times the most skeleton within reach of one point: the
+  // triangle's area, at most the disk of radius R; the segment's or arc's length, a segment's
+  // at most 2 R.
+  double bend_bound(uint32_t id) const {
+    if (id < capsule_base) {
+      const double r = sphere_radii[id];
+      return std::abs(sphere_strengths[id]) * 4.0 / (r * r);
+    }
+    if (id < arc_base) {
+      const uint32_t i = id - capsule_base;
+      const double r = capsule_radii[i];
+      const double reach =
+          capsule_is_blob[i] ? 1.0 : std::min(glm::length(capsules[i].b - capsules[i].a), 2.0 * r);
+      return std::abs(capsule_strengths[i]) * reach * 4.0 / (r * r);
+    }
+    if (id < triangle_base) {
+      const uint32_t i = id - arc_base;
+      const double length = arcs[i].radius * std::min(arcs[i].angle, 2.0 * kPi);
+      return std::abs(arc_strengths[i]) * length * 4.0 / (arc_radii[i] * arc_radii[i]);
+    }
+    const uint32_t i = id - triangle_base;
+    const Group& g = group_of(i);
+    const double area = std::min(frames[i].area, kPi * g.radius * g.radius);
+    return std::abs(g.strength) * area * 4.0 / (g.radius * g.radius);
   }
 
   field::FieldSample sample(uint32_t id, const Vec3& p) const {

@@ -18,11 +18,19 @@ enum class RootMode {
   any,    // whether there is one (shadow rays): the first one, found the same way
 };
 
+// A ball where F > T, certified (inside_balls.hpp); radius 0 for none.
+struct InsideBall {
+  Vec3 center{0.0};
+  double radius = 0.0;
+};
+
 // Appends the roots in [tmin, tmax] as `mode` asks. With RootMode first and `first_gradient`,
 // the exact gradient at the root is put there when the finder had it at hand (the sphere
-// sweep does); it is left empty otherwise.
+// sweep does); it is left empty otherwise. With RootMode any and `inside`, a search that finds
+// a crossing leaves there a ball inside the surface beside it where the window march can
+// certify one cheaply (radius 0 otherwise).
 void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
                 RootMode mode, std::vector<double>& out, TraceStats& stats,
-                std::optional<Vec3>* first_gradient = nullptr);
+                std::optional<Vec3>* first_gradient = nullptr, InsideBall* inside = nullptr);
 
 }  // namespace convray::implicit

@@ -9,6 +9,7 @@
 #include "field/triangle_batch.hpp"
 #include "field/triangle_quartic.hpp"
 #include "implicit/down_bend_table.hpp"
+#include "implicit/inside_balls.hpp"
 #include "implicit/line_curvature.hpp"
 
 namespace convray::implicit {
@@ -38,6 +39,11 @@ constexpr double kMaxStep = 2.0;
 // Each next window is the longest whose chord bound would exclude T if F ended it where it
 // started (D h^2 / 8 below the gap to T). Asking for a margin (half the gap, a quarter) gave
 // more, shorter windows: render instructions (callgrind) 1.05-1.18 times as many.
+// A shadow ray found blocked leaves a ball inside the surface for the next rays of its run
+// (inside_balls.hpp): the largest certified around this many points, this many smallest radii
+// apart, from the first sample found inside (the field peaks about a radius in).
+constexpr int kProbePoints = 4;
+constexpr double kProbeStep = 0.25;
 
 // What an evaluation of the cluster's field returns: the value, or also the gradient (the
 // first hit's normal).
@@ -62,6 +68,9 @@ class ClusterField {
   // where it has a cheap one (LineCurvature::down_anywhere), larger but quick to sum.
   double curvature(double a, double b, bool upward, bool anywhere = false);
   double reach() const { return reach_; }
+  // The sum of Impl::bend_bound over the primitives whose support holds p(t), after an
+  // evaluation at t (which adds the members entered by then).
+  double bend_bound_at(double t) const;
 
  private:
   struct Member {
@@ -317,6 +326,22 @@ field::FieldSample ClusterField::evaluate(double t) {
   return sum;
 }
 
+double ClusterField::bend_bound_at(double t) const {
+  double sum = 0.0;
+  for (size_t k = 0; k < batches_used_; ++k) {
+    const Batch& b = batches_[k];
+    for (size_t lane = 0; lane < b.enter.size(); ++lane) {
+      if (b.enter[lane] <= t && t <= b.exit[lane]) {
+        sum += s_.bend_bound(s_.triangle_base + b.triangles[lane]);
+      }
+    }
+  }
+  for (const Member& m : others_) {
+    if (m.enter <= t && t <= m.exit) sum += s_.bend_bound(m.id);
+  }
+  return sum;
+}
+
 double ClusterField::value_minus_threshold(double t) {
   return evaluate<Want::value>(t).value / s_.threshold - 1.0;
 }
@@ -413,6 +438,8 @@ class Marcher {
   // The exact gradient at the last root, where its polish evaluated it (RootMode::first with
   // `want_gradient`): within the root tolerance of last_root().
   const std::optional<Vec3>& root_gradient() const { return root_gradient_; }
+  // RootMode::any: the sample of the last bracket that lies inside (F >= T).
+  double inside() const { return inside_; }
 
  private:
   Value value(double t) { return {t, field_.value_minus_threshold(t)}; }
@@ -445,6 +472,7 @@ class Marcher {
   std::vector<double>& out_;
   TraceStats& stats_;
   double last_root_ = kInfinity;
+  double inside_ = kInfinity;
   std::optional<Vec3> root_gradient_;
 };
 
@@ -464,6 +492,8 @@ bool Marcher::bracket(const Value& a, const Value& b, const Value* third) {
                        [&](double x) { return field_.value_minus_threshold(x); }, guess.t,
                        guess.slope, tolerance, 0.0, !with_gradient, kLanding * s_.min_radius);
     if (with_gradient) t = polish_with_gradient(a, b, t, tolerance);
+  } else {
+    inside_ = a.g < 0.0 ? b.t : a.t;
   }
   if (out_.empty() || t > out_.back() + 1e-9 * s_.min_radius) out_.push_back(t);
   last_root_ = t;
@@ -607,23 +637,45 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
   return false;
 }
 
+// The largest ball certified inside the surface around kProbePoints points from `from` (a
+// sample inside) on, up to `to`, each sampled with its gradient on the cluster's members
+// (which hold every support that holds a point of the ray there).
+InsideBall probe_inside(const Impl& s, ClusterField& field, double from, double to) {
+  InsideBall best;
+  if (!s.nonnegative) return best;
+  for (int k = 0; k < kProbePoints; ++k) {
+    const double t = from + k * kProbeStep * s.min_radius;
+    if (t > to) break;
+    const field::FieldSample at = field.sample(t);
+    const double radius =
+        inside_radius(at.value, s.threshold, glm::length(at.gradient), field.bend_bound_at(t));
+    if (radius > best.radius) {
+      best = {field.ray().at(t), radius};
+    } else if (radius == 0.0 && k > 0) {
+      break;  // out again: the deepest point is behind
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 void march_cluster(const Impl& surface, const Ray& ray,
                    std::span<const accel::SupportInterval> cluster,
                    const accel::TriangleLineTable& lines, double tmin, double tmax,
                    RootMode mode, std::vector<double>& out, TraceStats& stats,
-                   std::optional<Vec3>* first_gradient) {
+                   std::optional<Vec3>* first_gradient, InsideBall* inside) {
   const double from = std::max(tmin, cluster.front().enter);
   ClusterField field(surface, ray, cluster, lines, from, stats);
   const double to = std::min(tmax, field.reach());
   if (!(from < to)) return;
   Marcher marcher(surface, field, mode, first_gradient != nullptr, out, stats);
-  if (marcher.march(from, to, from == cluster.front().enter) && mode == RootMode::first &&
-      first_gradient) {
+  if (!marcher.march(from, to, from == cluster.front().enter)) return;
+  if (mode == RootMode::first && first_gradient) {
     *first_gradient = marcher.root_gradient() ? *marcher.root_gradient()
                                               : field.sample(marcher.last_root()).gradient;
   }
+  if (mode == RootMode::any && inside) *inside = probe_inside(surface, field, marcher.inside(), to);
 }
 
 }  // namespace convray::implicit

@@ -33,11 +33,14 @@ namespace convray::implicit {
 // supports crossing the ray there, sorted by entry (every primitive whose support meets the
 // ray in [tmin, tmax]); `lines` holds the rows their `terms` name, which every triangle's
 // interval must have (SupportIndex::intersect with a TriangleLineTable). With RootMode::first
-// and `first_gradient`, the exact gradient at the root is put there. RootMode::any appends a point past the first sign change, unrefined.
+// and `first_gradient`, the exact gradient at the root is put there. RootMode::any appends a
+// point past the first sign change, unrefined; with `inside`, the largest ball certified
+// inside the surface (inside_balls.hpp) around a few points from the first sample found
+// inside on, within [tmin, tmax].
 void march_cluster(const ConvolutionSurface::Impl& surface, const Ray& ray,
                    std::span<const accel::SupportInterval> cluster,
                    const accel::TriangleLineTable& lines, double tmin, double tmax,
                    RootMode mode, std::vector<double>& out, TraceStats& stats,
-                   std::optional<Vec3>* first_gradient);
+                   std::optional<Vec3>* first_gradient, InsideBall* inside = nullptr);
 
 }  // namespace convray::implicit

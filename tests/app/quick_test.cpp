@@ -98,7 +98,8 @@ TEST_F(QuickCommand, StatsListEveryCounterAndPhaseOnItsOwnLine) {
   ASSERT_EQ(run.exit_code, 0) << run.all();
   for (const std::string item :
        {"image: 32x24", "rays: ", "primitives per ray: ", "field evaluations: ", "roots: ",
-        "fits: ", "subdivisions: ", "fallbacks: ", "surface memory: ", "time load: ",
+        "fits: ", "subdivisions: ", "fallbacks: ", "shadow rays settled inside: ",
+        "surface memory: ", "time load: ",
         "time build: ", "time render: ", "time write: "}) {
     EXPECT_NE(run.out.find("\n" + item), std::string::npos) << item;
   }
