@@ -95,12 +95,6 @@ void check(const char* step) {
   }
 }
 
-// A triangle whose support box the line crosses, its exact span still to be computed.
-struct TriangleCandidate {
-  const GeometrySource* source;
-  uint32_t primitive;
-};
-
 // Extends RTCIntersectContext (it must come first) with the exact double-precision ray.
 struct LineContext {
   RTCIntersectContext embree;
@@ -181,9 +175,12 @@ void group_by_source(std::vector<TriangleCandidate>& candidates, BySource by_sou
   std::copy(grouped.begin(), grouped.end(), candidates.begin());
 }
 
+}  // namespace
+
 // The exact spans of the triangle candidates, a run of one source at a time through the SIMD
 // batch (the same answers as GeometrySource::span, which tests compare it with).
-void span_triangles(const LineContext& line, std::vector<TriangleCandidate>& candidates) {
+void span_candidates(const Line& line, std::vector<TriangleCandidate>& candidates,
+                     std::vector<SupportInterval>& out, TriangleLineTable* terms) {
   thread_local std::vector<uint32_t> ids;
   thread_local TriangleSpanBatch batch;
   const auto by_source = [](const TriangleCandidate& a, const TriangleCandidate& b) {
@@ -203,20 +200,22 @@ void span_triangles(const LineContext& line, std::vector<TriangleCandidate>& can
     }
     batch.gather({source.triangles, source.count}, ids);
     uint32_t row = SupportInterval::kNoTerms;
-    if (line.terms) {
-      row = uint32_t(batch.compute(line.origin, line.direction, source.shared_radius, *line.terms));
+    if (terms) {
+      row = uint32_t(batch.compute(line.origin, line.direction, source.shared_radius, *terms));
     } else {
       batch.compute(line.origin, line.direction, source.shared_radius);
     }
     for (size_t k = 0; k < ids.size(); ++k) {
       const Span s = batch.span(k);
       if (s.empty() || s.exit < line.tmin || s.enter > line.tmax) continue;
-      line.out->push_back({source.first_id + ids[k], s.enter, s.exit,
-                           line.terms ? row + uint32_t(k) : SupportInterval::kNoTerms});
+      out.push_back({source.first_id + ids[k], s.enter, s.exit,
+                     terms ? row + uint32_t(k) : SupportInterval::kNoTerms});
     }
     begin = end;
   }
 }
+
+namespace {
 
 // args->query is the world-space query; inside an instance the geometry is found by the
 // instance's id (see intersect_callback).
@@ -317,7 +316,7 @@ void intersect_line(RTCSceneTy* scene, const std::vector<GeometrySource>& source
   rayhit.ray.flags = 0;
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene, &line.embree, &rayhit);
-  span_triangles(line, candidates);
+  span_candidates({origin, direction, tmin, tmax}, candidates, out, terms);
 }
 
 void contain_point(RTCSceneTy* scene, const std::vector<GeometrySource>& sources, const Vec3& p,

@@ -40,6 +40,24 @@ struct GeometrySource {
   bool contains(uint32_t i, const Vec3& p) const;
 };
 
+// A line query: origin + t direction (unit direction), t in [tmin, tmax].
+struct Line {
+  Vec3 origin, direction;
+  double tmin, tmax;
+};
+
+// A triangle that may cross a line (its support's bounding ball and slab said so:
+// may_cross), its exact span still to be computed.
+struct TriangleCandidate {
+  const GeometrySource* source;
+  uint32_t primitive;
+};
+
+// Appends the candidates whose exact span meets [line.tmin, line.tmax] to `out` (the whole
+// span), with their terms along the line in `terms` if asked. Reorders `candidates` by source.
+void span_candidates(const Line& line, std::vector<TriangleCandidate>& candidates,
+                     std::vector<SupportInterval>& out, TriangleLineTable* terms);
+
 // The float slack Embree's boxes need around supports spanning `bounds` (see the .cpp).
 double support_margin(const Box3& bounds);
 

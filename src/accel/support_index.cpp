@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "accel/line_fans.hpp"
 #include "accel/support_geometry.hpp"
 #include "accel/triangle_supports_impl.hpp"
 
@@ -20,6 +21,9 @@ struct SupportIndex::Impl {
   std::vector<std::vector<BoundingBall>> balls;  // of each triangle source's supports
   // The placed hierarchies, kept alive while `scene` refers to them.
   std::vector<std::shared_ptr<const TriangleSupports>> instances;
+  // Lists for lines through a common point (line_fans.hpp), where every source is a mesh's
+  // and there are few enough triangles.
+  std::unique_ptr<LineFans> fans;
   long long embree_bytes = 0;  // this scene's own allocations
   Box3 bounds;
   size_t size = 0;
@@ -163,6 +167,12 @@ SupportIndex::SupportIndex(const SupportSources& in) : impl_(std::make_unique<Im
   }
   m.scene = build.commit("building the support hierarchy");
   m.embree_bytes = build.bytes();
+  const bool meshes_only = std::all_of(m.sources.begin(), m.sources.end(), [](const auto& s) {
+    return s.kind == GeometrySource::Kind::triangle;
+  });
+  if (meshes_only && m.size > 0 && m.size <= LineFans::kFanBalls) {
+    m.fans = std::make_unique<LineFans>(m.sources, m.bounds);
+  }
 }
 
 SupportIndex::~SupportIndex() = default;
@@ -188,6 +198,15 @@ void SupportIndex::intersect(const Vec3& origin, const Vec3& direction, double t
                              std::vector<SupportInterval>& out,
                              TriangleLineTable* terms) const {
   if (impl_->size == 0) return;
+  if (impl_->fans) {
+    thread_local std::vector<detail::TriangleCandidate> candidates;
+    candidates.clear();
+    const detail::Line line{origin, direction, tmin, tmax};
+    if (impl_->fans->candidates(line, candidates)) {
+      detail::span_candidates(line, candidates, out, terms);
+      return;
+    }
+  }
   detail::intersect_line(impl_->scene, impl_->sources, origin, direction, tmin, tmax, out, terms);
 }
 

@@ -1,0 +1,309 @@
+#include "accel/line_fans.hpp"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include "util/simd_width.hpp"
+
+namespace convray::accel {
+namespace {
+
+// A cone's width at the far side of the supports, in mean ball radii: its list is then about
+// as long as one line's candidates there (the balls within a radius of a line), and a camera's
+// tile of rays shares one or two cones.
+constexpr double kConeWidth = 0.5;
+// The cones of an apex, and the apexes, kept per index and thread (a camera's eye and a light
+// or two; the cones of the tile being traced and its neighbours).
+constexpr size_t kCones = 4;
+constexpr size_t kApexes = 2;
+// An apex whose cones serve fewer lines than this each, once it has built kTrialBuilds, is
+// given up (the lines walk the hierarchy): the balls are narrow beside the spacing of its
+// lines, and building the cones would cost more than they save. A build tests every ball (a
+// few cycles each), a line served saves about a walk of the hierarchy (a thousand cycles or
+// more): at least one line per kBallsPerLine balls.
+constexpr uint64_t kLinesPerCone = 8;
+constexpr uint64_t kBallsPerLine = 256;
+constexpr uint64_t kTrialBuilds = 16;
+// Meeting points waiting for a third line (State::candidates), and the lines through no apex
+// kept to meet the next ones (State::history).
+constexpr size_t kCandidates = 4;
+constexpr size_t kHistory = 3;
+
+std::atomic<uint64_t> fans_made{0};
+
+}  // namespace
+
+struct LineFans::Cone {
+  Vec3 axis{0.0};
+  double cos_angle = 2.0;  // |d.axis| >= cos_angle holds no line: an empty slot
+  std::vector<uint32_t> members;  // into entries_
+  // Their balls side by side for the scan, in whole SIMD widths (the padding's NaN centres
+  // fail every test).
+  std::vector<double> x, y, z, radius, nx, ny, nz, slab;
+  std::vector<double> pass;    // the scan's room: 1 where may_cross keeps the ball
+  std::vector<uint32_t> kept;  // and their indices
+};
+
+struct LineFans::Apex {
+  bool valid = false;
+  bool off = false;  // given up (kLinesPerCone)
+  Vec3 point{0.0};
+  double angle = 0.0;  // its cones' half angle
+  uint64_t lines = 0, builds = 0;
+  std::array<Cone, kCones> cones;
+  unsigned next_cone = 0;
+};
+
+struct LineFans::State {
+  uint64_t serial = 0;
+  std::array<Apex, kApexes> apexes;
+  unsigned next_apex = 0;
+  // The last few lines through no apex, where new apexes are looked for.
+  struct Seen {
+    Vec3 origin, direction;
+  };
+  std::array<Seen, kHistory> history{};
+  unsigned next_history = 0, history_count = 0;
+  // Points where two lines met, waiting for a third line through them before they become
+  // apexes: a camera ray and the shadow ray from its hit meet there, and nothing else does.
+  std::array<Vec3, kCandidates> candidates{};
+  unsigned next_candidate = 0, candidate_count = 0;
+};
+
+LineFans::LineFans(const std::vector<detail::GeometrySource>& sources, const Box3& bounds)
+    : serial_(++fans_made) {
+  double radii = 0.0;
+  for (const detail::GeometrySource& s : sources) {
+    if (s.kind != detail::GeometrySource::Kind::triangle) continue;
+    for (uint32_t i = 0; i < s.count; ++i) {
+      entries_.push_back({&s, i});
+      radii += s.balls[i].radius;
+    }
+  }
+  center_ = 0.5 * (bounds.lo + bounds.hi);
+  reach_ = 0.5 * glm::length(bounds.hi - bounds.lo);
+  mean_radius_ = entries_.empty() ? 0.0 : radii / double(entries_.size());
+  // Lines through an apex miss it by their rounding, and an apex found where two lines at a
+  // small angle meet is off by that rounding over the angle (a light found from the shadow
+  // rays of neighbouring pixels: 2e-7 of the scene's size): lists are made for lines within
+  // this of the apex, their balls grown by as much, which adds no ball to speak of.
+  tolerance_ = 1e-5 * mean_radius_;
+  // Every ball side by side, for the cones' builds; rho grown by the tolerance (a line
+  // passing that near the apex meets a ball only where its parallel through the apex meets
+  // the grown ball) and by rounding.
+  const size_t n = whole_simd_widths(entries_.size());
+  for (auto* v : {&x_, &y_, &z_, &rho_}) v->assign(n, std::numeric_limits<double>::quiet_NaN());
+  for (size_t k = 0; k < entries_.size(); ++k) {
+    const BoundingBall& ball = entries_[k].source->balls[entries_[k].primitive];
+    x_[k] = ball.center.x;
+    y_[k] = ball.center.y;
+    z_[k] = ball.center.z;
+    rho_[k] = (ball.radius + tolerance_) * (1.0 + 1e-9);
+  }
+}
+
+LineFans::State& LineFans::state() const {
+  thread_local std::array<State, 4> states;
+  thread_local unsigned next = 0;
+  for (State& s : states) {
+    if (s.serial == serial_) return s;
+  }
+  State& s = states[next++ % states.size()];
+  s = State{};
+  s.serial = serial_;
+  return s;
+}
+
+namespace {
+
+double distance2_to_line(const Vec3& p, const Vec3& origin, const Vec3& direction) {
+  const Vec3 w = p - origin;
+  const double along = glm::dot(w, direction);
+  return std::max(0.0, glm::dot(w, w) - along * along);
+}
+
+// Where two lines (unit directions) come nearest each other, and how near: false for
+// parallel lines.
+bool nearest_points(const Vec3& o1, const Vec3& d1, const Vec3& o2, const Vec3& d2, Vec3& p1,
+                    Vec3& p2) {
+  const Vec3 w = o1 - o2;
+  const double b = glm::dot(d1, d2), d = glm::dot(d1, w), e = glm::dot(d2, w);
+  const double denominator = 1.0 - b * b;
+  if (!(denominator > 1e-14)) return false;
+  p1 = o1 + ((b * e - d) / denominator) * d1;
+  p2 = o2 + ((e - b * d) / denominator) * d2;
+  return true;
+}
+
+}  // namespace
+
+void LineFans::lay_out(Cone& cone) const {
+  const size_t n = whole_simd_widths(cone.members.size());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (auto* v : {&cone.x, &cone.y, &cone.z, &cone.radius, &cone.nx, &cone.ny, &cone.nz,
+                  &cone.slab}) {
+    v->assign(n, nan);
+  }
+  cone.kept.resize(n);
+  cone.pass.resize(n);
+  for (size_t k = 0; k < cone.members.size(); ++k) {
+    const Entry& e = entries_[cone.members[k]];
+    const BoundingBall& ball = e.source->balls[e.primitive];
+    cone.x[k] = ball.center.x;
+    cone.y[k] = ball.center.y;
+    cone.z[k] = ball.center.z;
+    cone.radius[k] = ball.radius;
+    cone.nx[k] = ball.normal[0];
+    cone.ny[k] = ball.normal[1];
+    cone.nz[k] = ball.normal[2];
+    cone.slab[k] = ball.slab;
+  }
+}
+
+// may_cross (support_shapes.hpp) on every ball of the cone at once, its conditions as
+// selects; the indices of those it keeps, in order, into cone.kept. Returns how many.
+size_t LineFans::scan(Cone& cone, const detail::Line& line) const {
+  const double ox = line.origin.x, oy = line.origin.y, oz = line.origin.z;
+  const double dx = line.direction.x, dy = line.direction.y, dz = line.direction.z;
+  const double tmin = line.tmin, tmax = line.tmax;
+  const double *x = cone.x.data(), *y = cone.y.data(), *z = cone.z.data();
+  const double *radius = cone.radius.data(), *slab = cone.slab.data();
+  const double *nx = cone.nx.data(), *ny = cone.ny.data(), *nz = cone.nz.data();
+  uint32_t* kept = cone.kept.data();
+  double* pass = cone.pass.data();
+  const size_t n = cone.x.size();
+#pragma omp simd
+  for (size_t k = 0; k < n; ++k) {
+    const double wx = x[k] - ox, wy = y[k] - oy, wz = z[k] - oz;
+    const double ww = wx * wx + wy * wy + wz * wz, along = wx * dx + wy * dy + wz * dz;
+    const double r2 = radius[k] * radius[k];
+    const double half2 = r2 + 1e-12 * (ww + r2) - (ww - along * along);
+    const double before = tmin - along, past = along - tmax;
+    const double slope = dx * nx[k] + dy * ny[k] + dz * nz[k];
+    const double height = along * slope - (wx * nx[k] + wy * ny[k] + wz * nz[k]);
+    const double excess = std::abs(height) - slab[k] - 1e-12 * (std::abs(along) + radius[k]);
+    const bool beside = ((before > 0.0) & (before * before > half2)) |
+                        ((past > 0.0) & (past * past > half2)) |
+                        ((excess > 0.0) & (excess * excess > slope * slope * half2));
+    pass[k] = (half2 >= 0.0) & !beside ? 1.0 : 0.0;
+  }
+  // The indices apart: the vectorizer takes no store at a moving index.
+  size_t count = 0;
+  for (size_t k = 0; k < n; ++k) {
+    kept[count] = uint32_t(k);
+    count += pass[k] != 0.0;
+  }
+  return count;
+}
+
+LineFans::Cone& LineFans::cone_for(Apex& apex, const Vec3& direction) const {
+  for (Cone& c : apex.cones) {
+    if (std::abs(glm::dot(direction, c.axis)) >= c.cos_angle) return c;
+  }
+  Cone& cone = apex.cones[apex.next_cone++ % kCones];
+  ++apex.builds;
+  cone.axis = direction;
+  cone.cos_angle = std::cos(apex.angle);
+  cone.members.clear();
+  // A ball (c, rho) at distance D > rho from the apex subtends the angle asin(rho / D), so it
+  // meets a line through the apex within the cone's angle of the axis where the angle between
+  // the axis's line and the apex's line to c is at most the cone's plus that (angles between
+  // lines obey the triangle inequality): where |v.axis| >= cos(angle) sqrt(D^2 - rho^2) -
+  // sin(angle) rho, v = c - apex (the cosine of the sum, times D; no trigonometry per ball).
+  // A hair of angle for rounding.
+  const double angle = apex.angle + 1e-9;
+  const double cos_angle = std::cos(angle), sin_angle = std::sin(angle);
+  const double ax = apex.point.x, ay = apex.point.y, az = apex.point.z;
+  const double wx = direction.x, wy = direction.y, wz = direction.z;
+  const double *x = x_.data(), *y = y_.data(), *z = z_.data(), *rho = rho_.data();
+  thread_local std::vector<double> meets;
+  const size_t n = x_.size();
+  meets.resize(n);
+  double* m = meets.data();
+#pragma omp simd
+  for (size_t k = 0; k < n; ++k) {
+    const double vx = x[k] - ax, vy = y[k] - ay, vz = z[k] - az;
+    const double d2 = vx * vx + vy * vy + vz * vz, r2 = rho[k] * rho[k];
+    const double along = std::abs(vx * wx + vy * wy + vz * wz);
+    const double bound = cos_angle * std::sqrt(std::max(d2 - r2, 0.0)) - sin_angle * rho[k];
+    m[k] = (d2 <= r2) | (along >= bound) ? 1.0 : 0.0;
+  }
+  for (size_t k = 0; k < entries_.size(); ++k) {
+    if (m[k] != 0.0) cone.members.push_back(uint32_t(k));
+  }
+  lay_out(cone);
+  const uint64_t lines_per_cone = std::max<uint64_t>(kLinesPerCone, entries_.size() / kBallsPerLine);
+  if (apex.builds >= kTrialBuilds && apex.lines < lines_per_cone * apex.builds) apex.off = true;
+  return cone;
+}
+
+// A line through no apex: a meeting point it passes through becomes an apex (returned); where
+// it meets one of the last few such lines, the point waits for a third. (A renderer asks a
+// camera ray, then the shadow ray from its hit: the eye's lines come every other query.)
+LineFans::Apex* LineFans::confirm_apex(State& s, const detail::Line& line) const {
+  // The same line again (the next chunk of its search) passes through the points it met.
+  for (unsigned k = 0; k < s.history_count; ++k) {
+    if (line.origin == s.history[k].origin && line.direction == s.history[k].direction) {
+      return nullptr;
+    }
+  }
+  const double tolerance2 = tolerance_ * tolerance_;
+  for (unsigned k = 0; k < s.candidate_count; ++k) {
+    const Vec3 point = s.candidates[k];
+    if (!(distance2_to_line(point, line.origin, line.direction) <= tolerance2)) continue;
+    Apex& a = s.apexes[s.next_apex++ % kApexes];
+    a = Apex{};
+    a.valid = true;
+    a.point = point;
+    a.angle = kConeWidth * mean_radius_ / (glm::length(point - center_) + reach_);
+    s.candidates[k] = s.candidates[--s.candidate_count];
+    return &a;
+  }
+  for (unsigned k = 0; k < s.history_count; ++k) {
+    Vec3 p1, p2;
+    if (nearest_points(line.origin, line.direction, s.history[k].origin,
+                       s.history[k].direction, p1, p2) &&
+        glm::dot(p1 - p2, p1 - p2) <= tolerance2) {
+      if (s.candidate_count < kCandidates) {
+        s.candidates[s.candidate_count++] = 0.5 * (p1 + p2);
+      } else {
+        s.candidates[s.next_candidate++ % kCandidates] = 0.5 * (p1 + p2);
+      }
+    }
+  }
+  s.history[s.next_history++ % kHistory] = {line.origin, line.direction};
+  s.history_count = std::min<unsigned>(s.history_count + 1, kHistory);
+  return nullptr;
+}
+
+bool LineFans::candidates(const detail::Line& line,
+                          std::vector<detail::TriangleCandidate>& out) const {
+  if (!std::isfinite(line.tmin) || entries_.empty()) return false;
+  State& s = state();
+  Apex* apex = nullptr;
+  for (Apex& a : s.apexes) {
+    if (a.valid &&
+        distance2_to_line(a.point, line.origin, line.direction) <= tolerance_ * tolerance_) {
+      apex = &a;
+      break;
+    }
+  }
+  if (!apex) {
+    apex = confirm_apex(s, line);
+    if (!apex) return false;
+  }
+  if (apex->off) return false;
+  ++apex->lines;
+  Cone& cone = cone_for(*apex, line.direction);
+  const size_t kept = scan(cone, line);
+  for (size_t k = 0; k < kept; ++k) {
+    const Entry& e = entries_[cone.members[cone.kept[k]]];
+    out.push_back({e.source, e.primitive});
+  }
+  return true;
+}
+
+}  // namespace convray::accel

@@ -1,0 +1,69 @@
+#pragma once
+// Line queries through a common point, answered from short lists instead of a walk of Embree's
+// hierarchy. A camera's rays all leave its eye, and the shadow rays of a point light all pass
+// through the light: around such a point (an apex), the lines of a tile lie in a narrow cone,
+// and the supports' bounding balls that the cone meets are few, listed once and tested by each
+// line with the same ball-and-slab test (may_cross) the Embree callbacks apply. On a small
+// soup whose supports are wide beside it (scenes/soup.pov), Embree's walk and its callback per
+// box crossed were an eighth of a render; a list of a few dozen balls costs a tenth of that.
+//
+// Apexes are found from the queries themselves: two consecutive lines that pass within the
+// tolerance of one another (and are not parallel) meet at a candidate apex, which every later
+// line is checked against. A cone is a double cone: lines through the apex in either
+// direction (shadow rays leave their point towards the light). Its half angle keeps its width
+// at the far side of the supports within half a mean ball radius, so its list is about as
+// long as one line's candidates; a line outside every cone of its apex builds one around
+// itself (by brute force over the balls: fans are kept for indexes of at most kFanBalls
+// triangles). An apex whose cones serve too few lines each (rays far apart beside the balls,
+// as a big mesh's) is given up on this thread and its lines walk the hierarchy.
+//
+// The answer is the same set of candidates a walk would pass to the exact spans (every ball
+// such a line meets is in its cone's list), so the intervals are the same; the caller orders
+// them canonically. The lists are per thread and per index (keyed by a serial number, as
+// addresses are reused).
+#include <cstdint>
+#include <vector>
+
+#include "accel/support_geometry.hpp"
+
+namespace convray::accel {
+
+class LineFans {
+ public:
+  // At most this many triangles in all: a cone's list is built by testing every ball.
+  static constexpr size_t kFanBalls = 16384;
+
+  // Over the triangle sources of an index (other kinds make no fans: the caller checks), whose
+  // balls must outlive this.
+  LineFans(const std::vector<detail::GeometrySource>& sources, const Box3& bounds);
+
+  // Appends the candidates of the line (the balls of its cone that may_cross keeps) and
+  // returns true, or returns false where no apex or cone serves it (the caller walks the
+  // hierarchy instead).
+  bool candidates(const detail::Line& line,
+                  std::vector<detail::TriangleCandidate>& out) const;
+
+ private:
+  struct Entry {  // a ball and whose it is
+    const detail::GeometrySource* source;
+    uint32_t primitive;
+  };
+  struct Cone;
+  struct Apex;
+  struct State;
+  State& state() const;
+  Apex* confirm_apex(State& s, const detail::Line& line) const;
+  Cone& cone_for(Apex& apex, const Vec3& direction) const;
+  void lay_out(Cone& cone) const;
+  size_t scan(Cone& cone, const detail::Line& line) const;
+
+  std::vector<Entry> entries_;
+  std::vector<double> x_, y_, z_, rho_;  // their balls' centres and grown radii, in lanes
+  uint64_t serial_;
+  Vec3 center_;          // of the supports' bounds
+  double reach_;         // the bounds' half diagonal
+  double mean_radius_;   // of the balls
+  double tolerance_;     // how near an apex a line must pass
+};
+
+}  // namespace convray::accel
