@@ -11,28 +11,47 @@
 namespace convray::accel {
 namespace {
 
-// A cone's width at the far side of the supports, in mean ball radii: its list is then about
-// as long as one line's candidates there (the balls within a radius of a line), and a camera's
-// tile of rays shares one or two cones.
-constexpr double kConeWidth = 0.5;
+// A cone's width at the far side of the supports, in mean ball radii: its list at one depth
+// is then about twice one line's candidates there (the balls within a radius of a line), and
+// a camera's tile of rays shares a few cones. (Half a radius: the same on scenes/soup.pov,
+// and a bunny of 14,696 triangles at half a mean edge 1.25 times slower than without fans,
+// from the builds; two radii: the soup 1.02 times a radius's time.)
+constexpr double kConeWidth = 1.0;
 // The cones of an apex, and the apexes, kept per index and thread (a camera's eye and a light
 // or two; the cones of the tile being traced and its neighbours).
 constexpr size_t kCones = 4;
 constexpr size_t kApexes = 2;
-// An apex whose cones serve fewer lines than this each, once it has built kTrialBuilds, is
-// given up (the lines walk the hierarchy): the balls are narrow beside the spacing of its
-// lines, and building the cones would cost more than they save. A build tests every ball (a
-// few cycles each), a line served saves about a walk of the hierarchy (a thousand cycles or
-// more): at least one line per kBallsPerLine balls.
-constexpr uint64_t kLinesPerCone = 8;
-constexpr uint64_t kBallsPerLine = 256;
-constexpr uint64_t kTrialBuilds = 16;
+// An apex is given up (its lines walk the hierarchy) once its builds, after kTrialBuilds of
+// them, have tested more than kTestsPerLine balls and blocks per line served: a test costs a
+// few cycles, a line served saves about a walk of the hierarchy (a thousand cycles or more).
+// Where the balls are narrow beside the spacing of the lines (a big mesh at a small radius)
+// cones serve few lines each, and building them would cost more than they save.
+constexpr uint64_t kTestsPerLine = 64;
+constexpr uint64_t kTrialBuilds = 8;
+// Balls are grouped in blocks of kBlock consecutive ones (a mesh's triangles come in spatial
+// order: scene/mesh_skeleton.cpp), blocks in groups of kBlock; a cone's build tests the
+// groups' and blocks' bounding balls before their members'.
+constexpr size_t kBlock = 32;
 // Meeting points waiting for a third line (State::candidates), and the lines through no apex
 // kept to meet the next ones (State::history).
 constexpr size_t kCandidates = 4;
 constexpr size_t kHistory = 3;
 
 std::atomic<uint64_t> fans_made{0};
+
+// Whether a ball (centre, rho) meets some line through `apex` within the cone's angle of
+// `axis` (LineFans::cone_for says why); false for a NaN centre.
+struct ConeTest {
+  Vec3 apex, axis;
+  double cos_angle, sin_angle;
+  bool operator()(double x, double y, double z, double rho) const {
+    const double vx = x - apex.x, vy = y - apex.y, vz = z - apex.z;
+    const double d2 = vx * vx + vy * vy + vz * vz, r2 = rho * rho;
+    const double along = std::abs(vx * axis.x + vy * axis.y + vz * axis.z);
+    const double bound = cos_angle * std::sqrt(std::max(d2 - r2, 0.0)) - sin_angle * rho;
+    return (d2 <= r2) | (along >= bound);
+  }
+};
 
 }  // namespace
 
@@ -43,16 +62,20 @@ struct LineFans::Cone {
   // Their balls side by side for the scan, in whole SIMD widths (the padding's NaN centres
   // fail every test).
   std::vector<double> x, y, z, radius, nx, ny, nz, slab;
+  // Sorted by the distance of their centres from the apex (`distance`), so that a line's
+  // chunk [tmin, tmax] scans only the balls at its depths; the largest radius.
+  std::vector<double> distance;
+  double largest = 0.0;
   std::vector<double> pass;    // the scan's room: 1 where may_cross keeps the ball
   std::vector<uint32_t> kept;  // and their indices
 };
 
 struct LineFans::Apex {
   bool valid = false;
-  bool off = false;  // given up (kLinesPerCone)
+  bool off = false;  // given up (kTestsPerLine)
   Vec3 point{0.0};
   double angle = 0.0;  // its cones' half angle
-  uint64_t lines = 0, builds = 0;
+  uint64_t lines = 0, builds = 0, tests = 0;
   std::array<Cone, kCones> cones;
   unsigned next_cone = 0;
 };
@@ -94,7 +117,7 @@ LineFans::LineFans(const std::vector<detail::GeometrySource>& sources, const Box
   // Every ball side by side, for the cones' builds; rho grown by the tolerance (a line
   // passing that near the apex meets a ball only where its parallel through the apex meets
   // the grown ball) and by rounding.
-  const size_t n = whole_simd_widths(entries_.size());
+  const size_t n = (entries_.size() + kBlock - 1) / kBlock * kBlock;  // whole blocks
   for (auto* v : {&x_, &y_, &z_, &rho_}) v->assign(n, std::numeric_limits<double>::quiet_NaN());
   for (size_t k = 0; k < entries_.size(); ++k) {
     const BoundingBall& ball = entries_[k].source->balls[entries_[k].primitive];
@@ -102,6 +125,28 @@ LineFans::LineFans(const std::vector<detail::GeometrySource>& sources, const Box
     y_[k] = ball.center.y;
     z_[k] = ball.center.z;
     rho_[k] = (ball.radius + tolerance_) * (1.0 + 1e-9);
+  }
+  enclose(x_, y_, z_, rho_, entries_.size(), blocks_);
+  enclose(blocks_.x, blocks_.y, blocks_.z, blocks_.rho, blocks_.x.size(), groups_);
+}
+
+// The bounding balls of each run of kBlock balls (padding's NaN centres left out).
+void LineFans::enclose(const std::vector<double>& x, const std::vector<double>& y,
+                       const std::vector<double>& z, const std::vector<double>& rho, size_t n,
+                       Balls& out) {
+  for (size_t begin = 0; begin < n; begin += kBlock) {
+    const size_t end = std::min(n, begin + kBlock);
+    Box3 box;
+    for (size_t k = begin; k < end; ++k) box.extend(Vec3(x[k], y[k], z[k]));
+    const Vec3 c = 0.5 * (box.lo + box.hi);
+    double radius = 0.0;
+    for (size_t k = begin; k < end; ++k) {
+      radius = std::max(radius, glm::length(Vec3(x[k], y[k], z[k]) - c) + rho[k]);
+    }
+    out.x.push_back(c.x);
+    out.y.push_back(c.y);
+    out.z.push_back(c.z);
+    out.rho.push_back(radius * (1.0 + 1e-12));
   }
 }
 
@@ -140,18 +185,28 @@ bool nearest_points(const Vec3& o1, const Vec3& d1, const Vec3& o2, const Vec3& 
 
 }  // namespace
 
-void LineFans::lay_out(Cone& cone) const {
-  const size_t n = whole_simd_widths(cone.members.size());
+void LineFans::lay_out(Cone& cone, const Vec3& apex) const {
+  thread_local std::vector<std::pair<double, uint32_t>> order;
+  order.clear();
+  for (uint32_t k : cone.members) {
+    order.push_back({glm::length(Vec3(x_[k], y_[k], z_[k]) - apex), k});
+  }
+  std::sort(order.begin(), order.end());
+  // Whole SIMD widths past the last, from wherever a scan starts.
+  const size_t n = cone.members.size() + kSimdWidth;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (auto* v : {&cone.x, &cone.y, &cone.z, &cone.radius, &cone.nx, &cone.ny, &cone.nz,
-                  &cone.slab}) {
+                  &cone.slab, &cone.distance}) {
     v->assign(n, nan);
   }
   cone.kept.resize(n);
   cone.pass.resize(n);
-  for (size_t k = 0; k < cone.members.size(); ++k) {
-    const Entry& e = entries_[cone.members[k]];
+  cone.largest = 0.0;
+  for (size_t k = 0; k < order.size(); ++k) {
+    cone.members[k] = order[k].second;
+    const Entry& e = entries_[order[k].second];
     const BoundingBall& ball = e.source->balls[e.primitive];
+    cone.distance[k] = order[k].first;
     cone.x[k] = ball.center.x;
     cone.y[k] = ball.center.y;
     cone.z[k] = ball.center.z;
@@ -160,12 +215,33 @@ void LineFans::lay_out(Cone& cone) const {
     cone.ny[k] = ball.normal[1];
     cone.nz[k] = ball.normal[2];
     cone.slab[k] = ball.slab;
+    cone.largest = std::max(cone.largest, ball.radius);
   }
+}
+
+// The cone's balls whose centres lie at the depths of the line's [tmin, tmax] from the apex,
+// give or take the largest radius and the apex's tolerance (a ball further in or out cannot
+// meet it): [first, end) of the cone's order.
+std::pair<size_t, size_t> LineFans::depths(const Cone& cone, const Vec3& apex,
+                                           const detail::Line& line) const {
+  const double at = glm::dot(apex - line.origin, line.direction);  // the apex's t
+  double near = 0.0, far = std::max(at - line.tmin, line.tmax - at);
+  if (at < line.tmin) near = line.tmin - at;
+  if (at > line.tmax) near = at - line.tmax;
+  const double slack = cone.largest + 2.0 * tolerance_;
+  const size_t count = cone.members.size();
+  const auto begin = cone.distance.begin(), end = begin + ptrdiff_t(count);
+  const size_t first = size_t(std::lower_bound(begin, end, near - slack) - begin);
+  const size_t last = far + slack < kInfinity
+                          ? size_t(std::upper_bound(begin, end, far + slack) - begin)
+                          : count;
+  return {first, std::max(first, last)};
 }
 
 // may_cross (support_shapes.hpp) on every ball of the cone at once, its conditions as
 // selects; the indices of those it keeps, in order, into cone.kept. Returns how many.
-size_t LineFans::scan(Cone& cone, const detail::Line& line) const {
+size_t LineFans::scan(Cone& cone, const Vec3& apex, const detail::Line& line) const {
+  const auto [first, end] = depths(cone, apex, line);
   const double ox = line.origin.x, oy = line.origin.y, oz = line.origin.z;
   const double dx = line.direction.x, dy = line.direction.y, dz = line.direction.z;
   const double tmin = line.tmin, tmax = line.tmax;
@@ -174,9 +250,9 @@ size_t LineFans::scan(Cone& cone, const detail::Line& line) const {
   const double *nx = cone.nx.data(), *ny = cone.ny.data(), *nz = cone.nz.data();
   uint32_t* kept = cone.kept.data();
   double* pass = cone.pass.data();
-  const size_t n = cone.x.size();
+  const size_t n = first + whole_simd_widths(end - first);  // the arrays have room
 #pragma omp simd
-  for (size_t k = 0; k < n; ++k) {
+  for (size_t k = first; k < n; ++k) {
     const double wx = x[k] - ox, wy = y[k] - oy, wz = z[k] - oz;
     const double ww = wx * wx + wy * wy + wz * wz, along = wx * dx + wy * dy + wz * dz;
     const double r2 = radius[k] * radius[k];
@@ -192,7 +268,7 @@ size_t LineFans::scan(Cone& cone, const detail::Line& line) const {
   }
   // The indices apart: the vectorizer takes no store at a moving index.
   size_t count = 0;
-  for (size_t k = 0; k < n; ++k) {
+  for (size_t k = first; k < end; ++k) {
     kept[count] = uint32_t(k);
     count += pass[k] != 0.0;
   }
@@ -213,30 +289,33 @@ LineFans::Cone& LineFans::cone_for(Apex& apex, const Vec3& direction) const {
   // the axis's line and the apex's line to c is at most the cone's plus that (angles between
   // lines obey the triangle inequality): where |v.axis| >= cos(angle) sqrt(D^2 - rho^2) -
   // sin(angle) rho, v = c - apex (the cosine of the sum, times D; no trigonometry per ball).
-  // A hair of angle for rounding.
+  // A hair of angle for rounding. Groups of blocks, then blocks, then their balls.
   const double angle = apex.angle + 1e-9;
-  const double cos_angle = std::cos(angle), sin_angle = std::sin(angle);
-  const double ax = apex.point.x, ay = apex.point.y, az = apex.point.z;
-  const double wx = direction.x, wy = direction.y, wz = direction.z;
-  const double *x = x_.data(), *y = y_.data(), *z = z_.data(), *rho = rho_.data();
+  const ConeTest test{apex.point, direction, std::cos(angle), std::sin(angle)};
   thread_local std::vector<double> meets;
-  const size_t n = x_.size();
-  meets.resize(n);
-  double* m = meets.data();
+  meets.resize(kBlock);
+  for (size_t g = 0; g < groups_.x.size(); ++g) {
+    ++apex.tests;
+    if (!test(groups_.x[g], groups_.y[g], groups_.z[g], groups_.rho[g])) continue;
+    const size_t block_end = std::min(blocks_.x.size(), (g + 1) * kBlock);
+    for (size_t b = g * kBlock; b < block_end; ++b) {
+      ++apex.tests;
+      if (!test(blocks_.x[b], blocks_.y[b], blocks_.z[b], blocks_.rho[b])) continue;
+      const size_t first = b * kBlock;  // x_ is padded to whole blocks
+      apex.tests += kBlock;
+      double* m = meets.data();
+      const double *x = x_.data() + first, *y = y_.data() + first, *z = z_.data() + first;
+      const double* rho = rho_.data() + first;
 #pragma omp simd
-  for (size_t k = 0; k < n; ++k) {
-    const double vx = x[k] - ax, vy = y[k] - ay, vz = z[k] - az;
-    const double d2 = vx * vx + vy * vy + vz * vz, r2 = rho[k] * rho[k];
-    const double along = std::abs(vx * wx + vy * wy + vz * wz);
-    const double bound = cos_angle * std::sqrt(std::max(d2 - r2, 0.0)) - sin_angle * rho[k];
-    m[k] = (d2 <= r2) | (along >= bound) ? 1.0 : 0.0;
+      for (size_t k = 0; k < kBlock; ++k) m[k] = test(x[k], y[k], z[k], rho[k]) ? 1.0 : 0.0;
+      const size_t end = std::min(entries_.size(), first + kBlock);
+      for (size_t k = first; k < end; ++k) {
+        if (meets[k - first] != 0.0) cone.members.push_back(uint32_t(k));
+      }
+    }
   }
-  for (size_t k = 0; k < entries_.size(); ++k) {
-    if (m[k] != 0.0) cone.members.push_back(uint32_t(k));
-  }
-  lay_out(cone);
-  const uint64_t lines_per_cone = std::max<uint64_t>(kLinesPerCone, entries_.size() / kBallsPerLine);
-  if (apex.builds >= kTrialBuilds && apex.lines < lines_per_cone * apex.builds) apex.off = true;
+  lay_out(cone, apex.point);
+  if (apex.builds >= kTrialBuilds && apex.tests > kTestsPerLine * apex.lines) apex.off = true;
   return cone;
 }
 
@@ -298,7 +377,7 @@ bool LineFans::candidates(const detail::Line& line,
   if (apex->off) return false;
   ++apex->lines;
   Cone& cone = cone_for(*apex, line.direction);
-  const size_t kept = scan(cone, line);
+  const size_t kept = scan(cone, apex->point, line);
   for (size_t k = 0; k < kept; ++k) {
     const Entry& e = entries_[cone.members[cone.kept[k]]];
     out.push_back({e.source, e.primitive});
