@@ -121,10 +121,10 @@ LineFans::LineFans(const std::vector<detail::GeometrySource>& sources, const Box
   for (auto* v : {&x_, &y_, &z_, &rho_}) v->assign(n, std::numeric_limits<double>::quiet_NaN());
   for (size_t k = 0; k < entries_.size(); ++k) {
     const BoundingBall& ball = entries_[k].source->balls[entries_[k].primitive];
-    x_[k] = ball.center.x;
-    y_[k] = ball.center.y;
-    z_[k] = ball.center.z;
-    rho_[k] = (ball.radius + tolerance_) * (1.0 + 1e-9);
+    x_[k] = ball.center[0];
+    y_[k] = ball.center[1];
+    z_[k] = ball.center[2];
+    rho_[k] = (double(ball.radius) + tolerance_) * (1.0 + 1e-9);
   }
   enclose(x_, y_, z_, rho_, entries_.size(), blocks_);
   enclose(blocks_.x, blocks_.y, blocks_.z, blocks_.rho, blocks_.x.size(), groups_);
@@ -207,15 +207,15 @@ void LineFans::lay_out(Cone& cone, const Vec3& apex) const {
     const Entry& e = entries_[order[k].second];
     const BoundingBall& ball = e.source->balls[e.primitive];
     cone.distance[k] = order[k].first;
-    cone.x[k] = ball.center.x;
-    cone.y[k] = ball.center.y;
-    cone.z[k] = ball.center.z;
+    cone.x[k] = ball.center[0];
+    cone.y[k] = ball.center[1];
+    cone.z[k] = ball.center[2];
     cone.radius[k] = ball.radius;
     cone.nx[k] = ball.normal[0];
     cone.ny[k] = ball.normal[1];
     cone.nz[k] = ball.normal[2];
     cone.slab[k] = ball.slab;
-    cone.largest = std::max(cone.largest, ball.radius);
+    cone.largest = std::max(cone.largest, double(ball.radius));
   }
 }
 

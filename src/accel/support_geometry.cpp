@@ -135,8 +135,8 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
                                      ? static_cast<const GeometrySource*>(args->geometryUserPtr)
                                      : &(*line->sources)[instance];
   if (source->kind == GeometrySource::Kind::triangle) {
-    if (may_cross(line->origin, line->direction, line->tmin, line->tmax,
-                  source->balls[args->primID])) {
+    if (may_cross_chunk(line->origin, line->direction, line->tmin, line->tmax,
+                        source->balls[args->primID])) {
       line->triangles->push_back({source, args->primID});
     }
     return;

@@ -119,26 +119,38 @@ Vec3 smallest_ball_center(const field::Triangle& t) {
 // triangles' exact spans, the dragon's at R = 1 8 %). Its radius is measured from the centre
 // as computed, so rounding in the circumcentre never leaves a corner out; where that centre
 // is no better (or not finite), the centroid's ball.
-BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radius) {
+SmallestBall triangle_smallest_ball(const field::Triangle& triangle) {
   const Vec3 centroid = (triangle.a + triangle.b + triangle.c) * (1.0 / 3.0);
   const double centroid_reach2 = corner_reach2(triangle, centroid);
   const Vec3 smallest = smallest_ball_center(triangle);
   const double smallest_reach2 = corner_reach2(triangle, smallest);
-  const bool smaller = smallest_reach2 < centroid_reach2;
-  BoundingBall ball{smaller ? smallest : centroid,
-                    std::sqrt(smaller ? smallest_reach2 : centroid_reach2) + radius,
-                    {0.0f, 0.0f, 0.0f},
-                    std::numeric_limits<float>::infinity()};
+  if (smallest_reach2 < centroid_reach2) return {smallest, std::sqrt(smallest_reach2)};
+  return {centroid, std::sqrt(centroid_reach2)};
+}
+
+BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radius) {
+  constexpr float kUp = std::numeric_limits<float>::infinity();
+  const SmallestBall exact = triangle_smallest_ball(triangle);
+  BoundingBall ball{};
+  Vec3 rounded;
+  for (int axis = 0; axis < 3; ++axis) {
+    ball.center[axis] = float(exact.center[axis]);
+    rounded[axis] = double(ball.center[axis]);
+  }
+  const double stray = glm::length(rounded - exact.center);  // exact in all but the last bits
+  const double grown = (exact.reach + radius + stray) * (1.0 + 1e-12);
+  ball.radius = std::isfinite(grown) ? std::nextafter(float(grown), kUp) : kUp;
+  ball.slab = kUp;
   const Vec3 n = triangle_normal(triangle);
   const double n_length = glm::length(n);
   if (n_length > 0.0 && std::isfinite(n_length) && std::isfinite(ball.radius)) {
     const Vec3 unit = n / n_length;
     for (int axis = 0; axis < 3; ++axis) ball.normal[axis] = float(unit[axis]);
     // The float normal strays from the unit one by under 1e-7 (heights within the ball by
-    // 1e-7 of its radius), and the centre lies off the plane by its rounding.
-    const double off_plane = std::abs(glm::dot(ball.center - triangle.a, unit));
-    ball.slab = std::nextafter(float(radius + off_plane + 1e-6 * ball.radius),
-                               std::numeric_limits<float>::infinity());
+    // 1e-7 of its radius), and the exact centre lies off the plane by its rounding.
+    const double off_plane = std::abs(glm::dot(exact.center - triangle.a, unit));
+    ball.slab = std::nextafter(float((radius + off_plane + stray + 1e-6 * grown) * (1.0 + 1e-12)),
+                               kUp);
   }
   return ball;
 }

@@ -140,7 +140,7 @@ TEST(SupportShapes, BoundingBallKeepsEveryCrossingLine) {
     EXPECT_TRUE(line_kept) << trial;
     // A range ending before the span (within 1e-3 R, or within three times the ball's radius),
     // or starting after it, or overlapping it.
-    const double gap = (trial % 2 ? 1e-3 * r : 3.0 * ball.radius) * unit(rng);
+    const double gap = (trial % 2 ? 1e-3 * r : 3.0 * double(ball.radius)) * unit(rng);
     const double tmin = trial % 3 == 0 ? exact.exit + gap : exact.enter - r * unit(rng);
     const double tmax = trial % 3 == 1 ? exact.enter - gap : exact.exit + r * unit(rng);
     const bool meets = tmin <= exact.exit && exact.enter <= tmax;
@@ -162,26 +162,28 @@ TEST(SupportShapes, BoundingBallSlabRejectsLinesFarFromThePlane) {
   const double r = 0.1;
   const field::Triangle t{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   const BoundingBall ball = triangle_bounding_ball(t, r);
-  ASSERT_GT(ball.radius, 0.7);
+  ASSERT_GT(ball.radius, 0.7f);
+  const Vec3 center(ball.center[0], ball.center[1], ball.center[2]);
   // Parallel to the plane at heights 0.2 and 0.09 through the ball's centre.
   const Vec3 along = glm::normalize(Vec3(1, 1, 0));
-  EXPECT_FALSE(may_cross(ball.center + Vec3(0, 0, 0.2) - 5.0 * along, along, -kInfinity,
+  EXPECT_FALSE(may_cross(center + Vec3(0, 0, 0.2) - 5.0 * along, along, -kInfinity,
                          kInfinity, ball));
-  EXPECT_TRUE(may_cross(ball.center + Vec3(0, 0, 0.09) - 5.0 * along, along, -kInfinity,
+  EXPECT_TRUE(may_cross(center + Vec3(0, 0, 0.09) - 5.0 * along, along, -kInfinity,
                         kInfinity, ball));
-  EXPECT_TRUE(triangle_span(ball.center + Vec3(0, 0, 0.2) - 5.0 * along, along, t, r).empty());
-  EXPECT_FALSE(triangle_span(ball.center + Vec3(0, 0, 0.09) - 5.0 * along, along, t, r).empty());
+  EXPECT_TRUE(triangle_span(center + Vec3(0, 0, 0.2) - 5.0 * along, along, t, r).empty());
+  EXPECT_FALSE(triangle_span(center + Vec3(0, 0, 0.09) - 5.0 * along, along, t, r).empty());
   // Steep lines cross the slab wherever they cross the ball.
-  EXPECT_TRUE(may_cross(ball.center - 5.0 * Vec3(0, 0, 1), Vec3(0, 0, 1), -kInfinity,
+  EXPECT_TRUE(may_cross(center - 5.0 * Vec3(0, 0, 1), Vec3(0, 0, 1), -kInfinity,
                         kInfinity, ball));
   // A zero-area triangle has no slab: only its ball.
   const field::Triangle flat{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};
   const BoundingBall line_ball = triangle_bounding_ball(flat, r);
-  EXPECT_TRUE(may_cross(line_ball.center + Vec3(0, 0, 0.5) - 5.0 * Vec3(1, 0, 0), Vec3(1, 0, 0),
+  const Vec3 line_center(line_ball.center[0], line_ball.center[1], line_ball.center[2]);
+  EXPECT_TRUE(may_cross(line_center + Vec3(0, 0, 0.5) - 5.0 * Vec3(1, 0, 0), Vec3(1, 0, 0),
                         -kInfinity, kInfinity, line_ball));
 }
 
-// The bounding ball is the smallest around the triangle, grown by R: it holds every corner
+// The smallest ball around the triangle (the bounding ball's, before R): it holds every corner
 // (to rounding), is never larger than the ball around the centroid, is half the longest side
 // around that side's middle for an obtuse triangle, and the circumradius (a^2 b^2 c^2 over 16
 // times the squared area, Heron's formula) for an acute one.
@@ -192,11 +194,19 @@ TEST(SupportShapes, BoundingBallIsTheSmallestAroundTheTriangle) {
     const double r = 0.1;
     const field::Triangle t{random_point(rng, 1), random_point(rng, 1),
                             trial % 5 ? random_point(rng, 1) : random_point(rng, 1e-3)};
-    const BoundingBall ball = triangle_bounding_ball(t, r);
-    const double reach = ball.radius - r;
+    const SmallestBall smallest = triangle_smallest_ball(t);
+    const double reach = smallest.reach;
     for (const Vec3& corner : {t.a, t.b, t.c}) {
-      EXPECT_LE(glm::length(corner - ball.center), reach * (1.0 + 1e-12)) << trial;
+      EXPECT_LE(glm::length(corner - smallest.center), reach * (1.0 + 1e-12)) << trial;
     }
+    // Its float copy grown by R holds every corner's ball of radius R, and is as tight as
+    // floats allow.
+    const BoundingBall ball = triangle_bounding_ball(t, r);
+    const Vec3 center(ball.center[0], ball.center[1], ball.center[2]);
+    for (const Vec3& corner : {t.a, t.b, t.c}) {
+      EXPECT_LE(glm::length(corner - center) + r, double(ball.radius)) << trial;
+    }
+    EXPECT_LE(double(ball.radius), (reach + r) * (1.0 + 1e-6)) << trial;
     const Vec3 centroid = (t.a + t.b + t.c) / 3.0;
     const double centroid_reach = std::max(
         {glm::length(t.a - centroid), glm::length(t.b - centroid), glm::length(t.c - centroid)});
