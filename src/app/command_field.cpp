@@ -16,7 +16,6 @@
 #include "app/command_step.hpp"
 #include "app/declared_object.hpp"
 #include "app/parse_hooks.hpp"
-#include "app/soup_triangles.hpp"
 #include "implicit/placed_field.hpp"
 #include "implicit/mesh_field.hpp"
 #include "scene/mesh_skeleton.hpp"
@@ -167,7 +166,7 @@ int run_mesh_field(const FieldOptions& o, std::istream& in, std::ostream& out, s
   const mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
   step.now("building the field of " + o.mesh_path, kFreeMemory);
   if (loaded.segments.empty() && loaded.points.empty()) {
-    const implicit::MeshField field(soup_triangles(loaded.soup), o.radius, o.strength);
+    const implicit::MeshField field(scene::soup_triangles(loaded.soup), o.radius, o.strength);
     step.now("evaluating the points", kFreeMemory);
     return answer_points([&](const Vec3& p) { return field.field(p); }, in, out, err);
   }

@@ -5,7 +5,7 @@
 
 #include "app/command_step.hpp"
 #include "app/short_number.hpp"
-#include "app/soup_triangles.hpp"
+#include "scene/mesh_skeleton.hpp"
 #include "implicit/repeated_triangles.hpp"
 #include "mesh/load.hpp"
 #include "mesh/self_intersections.hpp"
@@ -83,7 +83,7 @@ void print_report(const std::string& path, const mesh::LoadedMesh& mesh, const m
       << "vertices: " << stats.vertices << " (distinct positions)\n";
   print_faces(mesh.report, out);
   if (stats.triangles > 0) {
-    out << "repeated triangles: " << implicit::repeated_triangle_count(soup_triangles(mesh.soup))
+    out << "repeated triangles: " << implicit::repeated_triangle_count(scene::soup_triangles(mesh.soup))
         << " (copies of another face's three corners; a render sums each once, times its count)\n";
   }
   print_lines(mesh.report, out);

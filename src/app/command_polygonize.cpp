@@ -14,7 +14,6 @@
 #include "app/short_number.hpp"
 #include "app/size_check.hpp"
 #include "app/usage_error.hpp"
-#include "app/soup_triangles.hpp"
 #include "implicit/placed_field.hpp"
 #include "implicit/mesh_field.hpp"
 #include "scene/mesh_skeleton.hpp"
@@ -50,7 +49,7 @@ struct PreparedField {
 // searches; the scalar closed form (its exact twin) places the vertices, so |F - T| <= 1e-6 T
 // holds on the exact field.
 void prepare_triangles(PreparedField& prepared, const mesh::LoadedMesh& loaded, double strength) {
-  auto field = std::make_shared<implicit::MeshField>(soup_triangles(loaded.soup), prepared.radius, strength);
+  auto field = std::make_shared<implicit::MeshField>(scene::soup_triangles(loaded.soup), prepared.radius, strength);
   prepared.source.supports = polygonize::triangle_support_boxes(field->triangles(), prepared.radius);
   prepared.source.field = [field](const Vec3& p) { return field->field_exact(p); };
   prepared.source.value = [field](const Vec3& p) { return field->value(p); };

@@ -13,7 +13,7 @@
 #include "app/command_step.hpp"
 #include "app/size_check.hpp"
 #include "app/usage_error.hpp"
-#include "app/soup_triangles.hpp"
+#include "scene/mesh_skeleton.hpp"
 #include "implicit/mesh_field.hpp"
 #include "field/threshold.hpp"
 #include "mesh/load.hpp"
@@ -104,7 +104,7 @@ int run_slice(const SliceOptions& o, std::ostream& out, std::ostream& err) {
     const mesh::LoadedMesh loaded = mesh::load_mesh(o.mesh_path);
     mesh::require_triangles(loaded, o.mesh_path, "slice");
     step.now("building the field of " + o.mesh_path, kFreeMemory);
-    const implicit::MeshField field(soup_triangles(loaded.soup), o.radius, o.strength);
+    const implicit::MeshField field(scene::soup_triangles(loaded.soup), o.radius, o.strength);
     const PlaneFrame frame =
         frame_for(loaded.soup.bounds(), o.axis, o.at, 1.5 * o.radius, o.width, o.height);
 

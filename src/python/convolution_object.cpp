@@ -14,7 +14,6 @@
 
 #include "app/command_polygonize.hpp"
 #include "app/size_check.hpp"
-#include "app/soup_triangles.hpp"
 #include "field/threshold.hpp"
 #include "implicit/surface.hpp"
 #include "mesh/load.hpp"
@@ -84,7 +83,7 @@ class ConvolutionObject {
   void add_mesh(const py::object& v, const py::object& f, double radius, double strength) {
     const mesh::TriangleSoup soup = soup_from(v, f);
     scene::MeshComponent c;
-    c.triangles = app::soup_triangles(soup);
+    c.triangles = scene::soup_triangles(soup);
     c.weight = weight_of(radius, strength);
     change([&] { record_.meshes.push_back(std::move(c)); });
   }

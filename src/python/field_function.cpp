@@ -1,6 +1,6 @@
 // convray.field(V, F, points, radius, strength, kernel): the summed raw field of a triangle
 // soup and its exact gradient, as `convray field --mesh FILE --radius R` computes them.
-#include "app/soup_triangles.hpp"
+#include "scene/mesh_skeleton.hpp"
 #include "implicit/mesh_field.hpp"
 #include "implicit/surface.hpp"
 #include "python/arrays.hpp"
@@ -19,13 +19,13 @@ std::vector<field::FieldSample> soup_field(const mesh::TriangleSoup& soup,
                                            double strength, const field::Kernel& kernel) {
   if (soup.triangles.empty()) return std::vector<field::FieldSample>(points.size());
   if (kernel.type == field::KernelType::quartic) {
-    const implicit::MeshField field(app::soup_triangles(soup), radius, strength);
+    const implicit::MeshField field(scene::soup_triangles(soup), radius, strength);
     return evaluate_points([&](const Vec3& p) { return field.field(p); }, points);
   }
   scene::ConvolutionObject object;
   object.kernel = kernel;
   scene::MeshComponent mesh;
-  mesh.triangles = app::soup_triangles(soup);
+  mesh.triangles = scene::soup_triangles(soup);
   mesh.weight = {strength, radius};
   object.meshes.push_back(std::move(mesh));
   const auto surface = implicit::make_surface(object);

@@ -28,6 +28,15 @@ MeshSkeleton skeleton_of(const mesh::LoadedMesh& mesh) {
   return skeleton;
 }
 
+std::vector<field::Triangle> soup_triangles(const mesh::TriangleSoup& soup) {
+  std::vector<field::Triangle> triangles;
+  triangles.reserve(soup.triangles.size());
+  for (const auto& t : soup.triangles) {
+    triangles.push_back({soup.vertices[t[0]], soup.vertices[t[1]], soup.vertices[t[2]]});
+  }
+  return triangles;
+}
+
 void add_skeleton(MeshSkeleton skeleton, const Weight& weight, ConvolutionObject& object) {
   if (!skeleton.triangles.empty()) object.meshes.push_back({std::move(skeleton.triangles), weight});
   object.segments.reserve(object.segments.size() + skeleton.segments.size());

@@ -27,6 +27,10 @@ struct MeshSkeleton {
 
 MeshSkeleton skeleton_of(const mesh::LoadedMesh& mesh);
 
+// The triangles of a soup as field primitives, in the soup's own order (skeleton_of puts them
+// in spatial order).
+std::vector<field::Triangle> soup_triangles(const mesh::TriangleSoup& soup);
+
 // Appends the skeleton's components to `object` (the triangles moved in).
 void add_skeleton(MeshSkeleton skeleton, const Weight& weight, ConvolutionObject& object);
 

@@ -13,6 +13,7 @@
 #include "implicit/convolution_surface.hpp"
 #include "implicit/surface_impl.hpp"
 #include "mesh/procedural.hpp"
+#include "scene/mesh_skeleton.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -24,9 +25,7 @@ ConvolutionSurface dense_torus() {
   scene::ConvolutionObject object;
   const mesh::TriangleSoup soup = mesh::torus(1.0, 0.35, 96, 48);
   scene::MeshComponent m;
-  for (const auto& t : soup.triangles) {
-    m.triangles.push_back({soup.vertices[t[0]], soup.vertices[t[1]], soup.vertices[t[2]]});
-  }
+  m.triangles = scene::soup_triangles(soup);
   m.weight = {1.0, kRadius};
   object.meshes.push_back(m);
   object.threshold = field::threshold_for_offset(1.0, kRadius, 0.5 * kRadius);

@@ -14,6 +14,7 @@
 #include "implicit/inside_balls.hpp"
 #include "implicit/surface_impl.hpp"
 #include "mesh/procedural.hpp"
+#include "scene/mesh_skeleton.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -34,9 +35,7 @@ scene::ConvolutionObject mixed_object() {
   scene::ConvolutionObject object;
   const mesh::TriangleSoup soup = mesh::torus(1.0, 0.35, 64, 32);
   scene::MeshComponent m;
-  for (const auto& t : soup.triangles) {
-    m.triangles.push_back({soup.vertices[t[0]], soup.vertices[t[1]], soup.vertices[t[2]]});
-  }
+  m.triangles = scene::soup_triangles(soup);
   m.weight = {1.0, kRadius};
   object.meshes.push_back(m);
   object.points.push_back({Vec3(0.0, 0.0, 0.0), {0.6, 0.5}});

@@ -12,15 +12,14 @@
 #include "implicit/reference_tracer.hpp"
 #include "field/threshold.hpp"
 #include "mesh/procedural.hpp"
+#include "scene/mesh_skeleton.hpp"
 
 namespace convray::implicit {
 namespace {
 
 scene::MeshComponent component(const mesh::TriangleSoup& soup, double radius) {
   scene::MeshComponent m;
-  for (const auto& t : soup.triangles) {
-    m.triangles.push_back({soup.vertices[t[0]], soup.vertices[t[1]], soup.vertices[t[2]]});
-  }
+  m.triangles = scene::soup_triangles(soup);
   m.weight = {1.0, radius};
   return m;
 }
