@@ -98,8 +98,7 @@ void check(const char* step) {
 // Extends RTCIntersectContext (it must come first) with the exact double-precision ray.
 struct LineContext {
   RTCIntersectContext embree;
-  Vec3 origin, direction;
-  double tmin, tmax;
+  Line line;
   const std::vector<GeometrySource>* sources;
   std::vector<SupportInterval>* out;
   std::vector<TriangleCandidate>* triangles;  // spans computed after the traversal, batched
@@ -129,21 +128,22 @@ void bounds_callback(const RTCBoundsFunctionArguments* args) {
 // the index's space: the exact ray meets them there, as in an index built without instances.
 void intersect_callback(const RTCIntersectFunctionNArguments* args) {
   if (!args->valid[0]) return;
-  auto* line = reinterpret_cast<LineContext*>(args->context);
+  auto* context = reinterpret_cast<LineContext*>(args->context);
+  const Line& line = context->line;
   const unsigned instance = args->context->instID[0];
   const GeometrySource* source = instance == RTC_INVALID_GEOMETRY_ID
                                      ? static_cast<const GeometrySource*>(args->geometryUserPtr)
-                                     : &(*line->sources)[instance];
+                                     : &(*context->sources)[instance];
   if (source->kind == GeometrySource::Kind::triangle) {
-    if (may_cross_chunk(line->origin, line->direction, line->tmin, line->tmax,
+    if (may_cross_chunk(line.origin, line.direction, line.tmin, line.tmax,
                         source->balls[args->primID])) {
-      line->triangles->push_back({source, args->primID});
+      context->triangles->push_back({source, args->primID});
     }
     return;
   }
-  const Span s = source->span(args->primID, line->origin, line->direction);
-  if (s.empty() || s.exit < line->tmin || s.enter > line->tmax) return;
-  line->out->push_back({source->first_id + args->primID, s.enter, s.exit});
+  const Span s = source->span(args->primID, line.origin, line.direction);
+  if (s.empty() || s.exit < line.tmin || s.enter > line.tmax) return;
+  context->out->push_back({source->first_id + args->primID, s.enter, s.exit});
 }
 
 // The candidates of each source together, sources in address order, each one's in the order
@@ -287,10 +287,7 @@ void intersect_line(RTCSceneTy* scene, const std::vector<GeometrySource>& source
                     std::vector<SupportInterval>& out, TriangleLineTable* terms) {
   LineContext line;
   rtcInitIntersectContext(&line.embree);
-  line.origin = origin;
-  line.direction = direction;
-  line.tmin = tmin;
-  line.tmax = tmax;
+  line.line = {origin, direction, tmin, tmax};
   line.sources = &sources;
   line.out = &out;
   line.terms = terms;
@@ -316,7 +313,7 @@ void intersect_line(RTCSceneTy* scene, const std::vector<GeometrySource>& source
   rayhit.ray.flags = 0;
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene, &line.embree, &rayhit);
-  span_candidates({origin, direction, tmin, tmax}, candidates, out, terms);
+  span_candidates(line.line, candidates, out, terms);
 }
 
 void contain_point(RTCSceneTy* scene, const std::vector<GeometrySource>& sources, const Vec3& p,

@@ -1,9 +1,9 @@
 #pragma once
 // Balls known to lie inside a convolution surface, for its shadow rays. Where every strength
 // is positive, each primitive's field is >= 0, so at any q the field is at least the sum of
-// the fields of the primitives whose support holds a point p; each of those changes by at
-// most its slope bound (Impl::slope_bound) times |q - p|. So F > T on the ball around p of
-// radius (F(p) - T) / (their slope bounds summed): a certificate made from one point query.
+// the fields of the primitives whose support holds a point p; that sum bends down by at most
+// the sum of their bend bounds B (Impl::bend_bound), so F(q) >= F(p) - |grad F(p)| d - B d^2/2
+// at distance d, and F > T on the ball around p where that stays above T.
 //
 // A shadow ray that finds the surface in its way (Surface::occluded) leaves such a ball on its
 // thread, around the deepest of a few points past where its window march found F > T (with
