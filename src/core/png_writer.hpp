@@ -1,5 +1,6 @@
 #pragma once
-// PNG, every render's default format, encoded by libpng directly: writing a PNG needs none of
+// PNG, every render's default format, written by libpng directly (its chunks; the image data
+// filtered and deflated on every core by core/png_deflate.hpp): writing a PNG needs none of
 // the image libraries behind the other formats (core/image_plugin.hpp), so a render starts
 // without loading them.
 //
