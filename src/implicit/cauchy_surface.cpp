@@ -70,11 +70,10 @@ CauchySurface::CauchySurface(const scene::ConvolutionObject& object)
     // Exactly repeated triangles (issue 17) have the same field and the same truncation box:
     // each distinct one once, with its multiplicity times the mesh's strength.
     const std::optional<DistinctTriangles> merged = merge_repeated(mesh.triangles);
-    const std::span<const field::Triangle> distinct =
-        merged ? std::span<const field::Triangle>(merged->triangles) : mesh.triangles;
-    if (merged) merged_triangles_ += mesh.triangles.size() - merged->triangles.size();
-    for (size_t i = 0; i < distinct.size(); ++i) {
-      const field::Triangle& t = distinct[i];
+    const size_t distinct = merged ? merged->size() : mesh.triangles.size();
+    if (merged) merged_triangles_ += mesh.triangles.size() - distinct;
+    for (size_t i = 0; i < distinct; ++i) {
+      const field::Triangle& t = mesh.triangles[merged ? merged->first[i] : i];
       const double area = 0.5 * glm::length(glm::cross(t.b - t.a, t.c - t.a));
       if (!(area > 0.0)) continue;  // zero field: nothing to truncate
       CauchyPrimitive p;

@@ -125,15 +125,15 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
     // Repeated triangles: each distinct one once, in a group per multiplicity k whose strength
     // is k times the mesh's (the same sum). Such groups no longer match the file's triangles
     // one for one, so they build their own hierarchy instead of taking the cache's.
-    merged_triangles += m.triangles.size() - merged->triangles.size();
+    merged_triangles += m.triangles.size() - merged->size();
     std::vector<uint32_t> multiplicities = merged->multiplicity;
     std::sort(multiplicities.begin(), multiplicities.end());
     multiplicities.erase(std::unique(multiplicities.begin(), multiplicities.end()),
                          multiplicities.end());
     for (const uint32_t k : multiplicities) {
       const auto first = uint32_t(triangles.size());
-      for (size_t i = 0; i < merged->triangles.size(); ++i) {
-        if (merged->multiplicity[i] == k) triangles.push_back(merged->triangles[i]);
+      for (size_t i = 0; i < merged->size(); ++i) {
+        if (merged->multiplicity[i] == k) triangles.push_back(m.triangles[merged->first[i]]);
       }
       groups.push_back({first, uint32_t(triangles.size()), m.weight.radius,
                         k * m.weight.strength, mesh});

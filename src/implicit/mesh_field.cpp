@@ -27,7 +27,10 @@ MeshField::Distinct MeshField::distinct(std::vector<field::Triangle> triangles) 
     const size_t n = triangles.size();
     return {std::move(triangles), std::vector<double>(n, 1.0), n};
   }
-  return {std::move(merged->triangles),
+  std::vector<field::Triangle> distinct;
+  distinct.reserve(merged->size());
+  for (const uint32_t i : merged->first) distinct.push_back(triangles[i]);
+  return {std::move(distinct),
           std::vector<double>(merged->multiplicity.begin(), merged->multiplicity.end()),
           triangles.size()};
 }

@@ -71,13 +71,13 @@ std::optional<DistinctTriangles> merge_repeated(std::span<const field::Triangle>
   }
   if (!repeats) return std::nullopt;
   DistinctTriangles out;
-  out.triangles.reserve(n);  // no copies of a growing array (the dragon's 200k triangles)
+  out.first.reserve(n);
   out.multiplicity.reserve(n);
   std::vector<uint32_t> slot(n, UINT32_MAX);
   for (size_t i = 0; i < n; ++i) {
     if (first[i] == i) {
-      slot[i] = uint32_t(out.triangles.size());
-      out.triangles.push_back(triangles[i]);
+      slot[i] = uint32_t(out.first.size());
+      out.first.push_back(uint32_t(i));
       out.multiplicity.push_back(1);
     } else {
       ++out.multiplicity[slot[first[i]]];
@@ -88,7 +88,7 @@ std::optional<DistinctTriangles> merge_repeated(std::span<const field::Triangle>
 
 size_t repeated_triangle_count(std::span<const field::Triangle> triangles) {
   const std::optional<DistinctTriangles> merged = merge_repeated(triangles);
-  return merged ? triangles.size() - merged->triangles.size() : 0;
+  return merged ? triangles.size() - merged->size() : 0;
 }
 
 }  // namespace convray::implicit

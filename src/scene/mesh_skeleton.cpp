@@ -1,5 +1,7 @@
 #include "scene/mesh_skeleton.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include "core/spatial_order.hpp"
 
 namespace convray::scene {
@@ -8,19 +10,22 @@ namespace convray::scene {
 // meets triangles that lie near each other, and the convolution surface then finds them near
 // each other in memory (the dragon at R = 5: a tenth less time than in the file's order; at
 // R = 1 about 1 %: docs/benchmarks.md). The field is a sum: the order changes its rounding.
+// Both loops on every core: the dragon's 200,000 triangles are 14.6 MB written afresh.
 MeshSkeleton skeleton_of(const mesh::LoadedMesh& mesh) {
   const std::vector<Vec3>& v = mesh.soup.vertices;
+  const std::vector<mesh::Triangle>& soup = mesh.soup.triangles;
   MeshSkeleton skeleton;
-  std::vector<Vec3> centroids;
-  centroids.reserve(mesh.soup.size());
-  for (const mesh::Triangle& t : mesh.soup.triangles) {
-    centroids.push_back((v[t[0]] + v[t[1]] + v[t[2]]) * (1.0 / 3.0));
-  }
-  skeleton.triangles.reserve(mesh.soup.size());
-  for (const uint32_t i : spatial_order(centroids)) {
-    const mesh::Triangle& t = mesh.soup.triangles[i];
-    skeleton.triangles.push_back({v[t[0]], v[t[1]], v[t[2]]});
-  }
+  std::vector<Vec3> centroids(soup.size());
+  tbb::parallel_for(size_t(0), soup.size(), [&](size_t i) {
+    const mesh::Triangle& t = soup[i];
+    centroids[i] = (v[t[0]] + v[t[1]] + v[t[2]]) * (1.0 / 3.0);
+  });
+  const std::vector<uint32_t> order = spatial_order(centroids);
+  skeleton.triangles.resize(soup.size());
+  tbb::parallel_for(size_t(0), soup.size(), [&](size_t k) {
+    const mesh::Triangle& t = soup[order[k]];
+    skeleton.triangles[k] = {v[t[0]], v[t[1]], v[t[2]]};
+  });
   skeleton.segments.reserve(mesh.segments.size());
   for (const mesh::Segment& s : mesh.segments) skeleton.segments.push_back({v[s[0]], v[s[1]]});
   skeleton.points.reserve(mesh.points.size());

@@ -63,12 +63,15 @@ TEST(RepeatedTriangles, MultiplicitiesMatchBruteForce) {
     const auto merged = merge_repeated(soup);
     ASSERT_TRUE(merged.has_value());
     size_t total = 0;
-    for (size_t i = 0; i < merged->triangles.size(); ++i) {
+    for (size_t i = 0; i < merged->size(); ++i) {
+      const Triangle& distinct = soup[merged->first[i]];
       size_t count = 0;
-      for (const Triangle& t : soup) count += same_corners(t, merged->triangles[i]);
+      for (const Triangle& t : soup) count += same_corners(t, distinct);
       EXPECT_EQ(merged->multiplicity[i], count);
+      // The first occurrence: no earlier triangle of the soup has the same corners.
+      for (uint32_t j = 0; j < merged->first[i]; ++j) EXPECT_FALSE(same_corners(soup[j], distinct));
       for (size_t j = 0; j < i; ++j) {
-        EXPECT_FALSE(same_corners(merged->triangles[i], merged->triangles[j]));
+        EXPECT_FALSE(same_corners(distinct, soup[merged->first[j]]));
       }
       total += merged->multiplicity[i];
     }
@@ -95,7 +98,7 @@ TEST(RepeatedTriangles, MergedSurfaceHasTheFieldOfTheUnmergedSum) {
   object.meshes.push_back(mesh);
   object.threshold = field::threshold_for_offset(strength, R, 0.5 * R);
   const ConvolutionSurface surface(object);
-  EXPECT_EQ(surface.merged_triangle_count(), soup.size() - merge_repeated(soup)->triangles.size());
+  EXPECT_EQ(surface.merged_triangle_count(), soup.size() - merge_repeated(soup)->size());
   std::uniform_real_distribution<double> u(-1.2, 1.2);
   for (int k = 0; k < 300; ++k) {
     const Vec3 p(u(rng), u(rng), u(rng));
@@ -147,7 +150,7 @@ TEST(RepeatedTriangles, MergedCauchySurfaceHasTheFieldOfTheUnmergedSum) {
     object.threshold = 0.5;
     const CauchySurface surface(object);
     EXPECT_EQ(surface.merged_triangle_count(),
-              soup.size() - merge_repeated(soup)->triangles.size());
+              soup.size() - merge_repeated(soup)->size());
     std::uniform_real_distribution<double> u(-1.2, 1.2);
     for (int k = 0; k < 200; ++k) {
       const Vec3 p(u(rng), u(rng), u(rng));
