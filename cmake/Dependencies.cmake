@@ -13,6 +13,9 @@ find_package(SDL2 CONFIG REQUIRED)  # the +D preview window (src/display/)
 # config, only its pkg-config file.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(SDL2_TTF REQUIRED IMPORTED_TARGET SDL2_ttf)
+# .gz meshes inflated in one call where the trailer's size is right (src/mesh/gzip.cpp): about
+# twice zlib's speed; zlib stays for everything else. Debian's libdeflate has pkg-config only.
+pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)
 
 # Debian's OpenImageIO config names /usr/include/opencv4 as an include directory, and CMake
 # refuses a missing one; we never use OpenCV, so drop it instead of installing libopencv-dev.

@@ -15,6 +15,7 @@ esac
 packages=(
   build-essential cmake git pkg-config
   libglm-dev zlib1g-dev
+  libdeflate-dev  # .gz meshes inflated in one call (src/mesh/gzip.cpp)
   libembree-dev libtbb-dev libcli11-dev tao-pegtl-dev
   libpng-dev  # PNG, every render's default format, written directly (src/core/png_writer.cpp)
   libopenimageio-dev openimageio-tools

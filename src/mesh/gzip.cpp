@@ -1,9 +1,11 @@
 #include "mesh/gzip.hpp"
 
+#include <libdeflate.h>
 #include <zlib.h>
 
 #include <algorithm>
 #include <climits>
+#include <memory>
 #include <new>
 #include <vector>
 
@@ -122,6 +124,35 @@ bool inflate_as_stated(std::string_view compressed, const std::string& file, uin
   return fits;
 }
 
+// The fast path: libdeflate inflates the first member in one call into a buffer of the size
+// its trailer states (the dragon's 7.3 MB in about half zlib's time). Returns false, the
+// output empty, wherever zlib's path must decide instead: no usable stated size, a member
+// that does not fit it, data libdeflate calls bad (zlib's path then names what is wrong), or
+// a second member after the first.
+bool inflate_with_libdeflate(std::string_view compressed, uint64_t limit,
+                             std::vector<char>& output) {
+  const uint64_t stated = stated_size(compressed);
+  if (stated == 0 || stated > limit) return false;
+  const std::unique_ptr<libdeflate_decompressor, decltype(&libdeflate_free_decompressor)>
+      decompressor(libdeflate_alloc_decompressor(), libdeflate_free_decompressor);
+  if (!decompressor) return false;
+  try {
+    output.resize(static_cast<size_t>(stated));
+  } catch (const std::bad_alloc&) {
+    return false;  // a forged size: zlib's counting pass finds the real one
+  }
+  size_t used = 0, produced = 0;
+  const libdeflate_result result =
+      libdeflate_gzip_decompress_ex(decompressor.get(), compressed.data(), compressed.size(),
+                                    output.data(), output.size(), &used, &produced);
+  if (result != LIBDEFLATE_SUCCESS || starts_gzip_member(compressed.substr(used))) {
+    std::vector<char>().swap(output);
+    return false;
+  }
+  output.resize(produced);
+  return true;
+}
+
 }  // namespace
 
 // Where the trailer's size is wrong, two passes: the first only counts, so a bomb is refused
@@ -132,6 +163,7 @@ std::vector<char> gunzip(std::string_view compressed, const std::string& file) {
   if (!starts_gzip_member(compressed)) fail(file, "gzip: not gzip data (the file does not start with 1f 8b)");
   const uint64_t limit = inflated_size_limit(compressed.size());
   std::vector<char> output;
+  if (inflate_with_libdeflate(compressed, limit, output)) return output;
   if (inflate_as_stated(compressed, file, limit, output)) return output;
   const uint64_t size = inflate_all(compressed, file, limit, [](const char*, size_t) { return true; });
   output.reserve(static_cast<size_t>(size));
