@@ -69,10 +69,7 @@ RTCDeviceTy* shared_device();
 // read before and after, counts this scene's bytes alone.
 class SceneBuild {
  public:
-  // A new empty scene: robust traversal; its geometries built by Embree's SAH builder, or by
-  // its Morton builder where `quick` (Embree builds every user geometry's own hierarchy with
-  // the geometry's build quality, and only the level above them with the scene's).
-  explicit SceneBuild(bool quick = false);
+  SceneBuild();  // a new empty scene: Morton builder, robust traversal
   ~SceneBuild();
   SceneBuild(const SceneBuild&) = delete;
   SceneBuild& operator=(const SceneBuild&) = delete;
@@ -88,7 +85,6 @@ class SceneBuild {
  private:
   std::unique_lock<std::recursive_mutex> lock_;
   RTCSceneTy* scene_ = nullptr;
-  bool quick_ = false;
   long long start_ = 0;
   long long bytes_ = 0;
 };

@@ -155,7 +155,7 @@ SupportIndex::SupportIndex(const SupportSources& in) : impl_(std::make_unique<Im
     });
     s.balls = balls.data();
   }
-  detail::SceneBuild build(in.quick_build);
+  detail::SceneBuild build;
   for (size_t g = 0; g < m.sources.size(); ++g) {
     const SupportSources::TriangleGroup* group = collected.groups[g];
     if (group && group->prebuilt && can_place(*group, m.bounds)) {

@@ -44,10 +44,6 @@ struct SupportSources {
   std::span<const field::Arc> arcs;
   std::span<const double> arc_radii;
   std::vector<TriangleGroup> triangle_groups;
-  // How Embree builds the hierarchy: its SAH builder (the default: the quicker traversal), or
-  // its Morton builder, which takes half the time where a line crosses few supports and the
-  // build is a noticeable part of a render (ConvolutionSurface decides).
-  bool quick_build = false;
 };
 
 struct SupportInterval {

@@ -22,12 +22,6 @@ namespace {
 // Chunked first-root searches pay off from about this many supports per line (measured on
 // the vertex blob of bench/vertex_blob_render: a loss at 2.5, a gain from 10).
 constexpr double kChunkedSupportsPerLine = 5.0;
-// Below this many supports per line, Embree's Morton builder makes the support hierarchy
-// (accel::SupportSources::quick_build): its build takes half the SAH builder's time, and a
-// line that crosses few supports pays little for the looser boxes. The dragon (pairs of whole
-// renders, Morton against SAH): R = 1 (14 supports a line) 0.97, R = 2 (37) 1.013, R = 5
-// (162) 1.032.
-constexpr double kQuickBuildSupportsPerLine = 25.0;
 // A chunk is at least this many mean support widths long: a support crossing a chunk's end is
 // gathered (and its exact span computed) again in the next chunk, which costs more than the
 // chunks save where they are short beside the supports (the soup of scenes/soup.pov).
@@ -50,8 +44,9 @@ bool has_source(const scene::MeshComponent& m) {
 
 // Mesh groups whose component has a source take their hierarchy from the cache (null: a
 // group of merged repeated triangles, which builds its own).
-void take_prebuilt(accel::SupportSources& sources, const Box3& index_bounds,
+void take_prebuilt(accel::SupportSources& sources,
                    const std::vector<const scene::MeshComponent*>& group_meshes, SupportCache& cache) {
+  const Box3 index_bounds = accel::support_bounds(sources);
   for (size_t g = 0; g < group_meshes.size(); ++g) {
     if (!group_meshes[g] || !has_source(*group_meshes[g])) continue;
     const scene::MeshComponent& mesh = *group_meshes[g];
@@ -174,12 +169,9 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
                                                               g.end_triangle - g.first_triangle),
          g.radius});
   }
-  const Box3 bounds = accel::support_bounds(sources);
-  if (cache) take_prebuilt(sources, bounds, group_meshes, *cache);
-  const double supports_per_line = expected_supports_per_line(bounds);
-  sources.quick_build = supports_per_line < kQuickBuildSupportsPerLine;
+  if (cache) take_prebuilt(sources, group_meshes, *cache);
   index = std::make_unique<accel::SupportIndex>(sources);
-  gather_in_chunks = supports_per_line > kChunkedSupportsPerLine;
+  gather_in_chunks = expected_supports_per_line() > kChunkedSupportsPerLine;
   min_chunk = kChunkWidths * mean_support_width();
 }
 
@@ -188,8 +180,8 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
 // support is the skeleton swept by a ball of radius r, whose area Steiner's formula gives: a
 // ball 4 pi r^2, a capsule 2 pi r L + 4 pi r^2, a triangle 2A + pi r P + 4 pi r^2 (perimeter
 // P); an arc (not convex) is counted as the capsule of its length.
-double ConvolutionSurface::Impl::expected_supports_per_line(const Box3& bounds) const {
-  const Vec3 e = bounds.extent();
+double ConvolutionSurface::Impl::expected_supports_per_line() const {
+  const Vec3 e = index->bounds().extent();
   const double area = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
   double supports = 0.0;
   auto swept = [](double r, double length) { return 2.0 * kPi * r * length + 4.0 * kPi * r * r; };

@@ -63,8 +63,8 @@ struct ConvolutionSurface::Impl {
   std::unique_ptr<accel::SupportIndex> index;  // built last, over the arrays above
 
   Impl(const scene::ConvolutionObject& object, SupportCache* cache);
-  // How many supports a random line through `bounds` (the supports' box) crosses, on average.
-  double expected_supports_per_line(const Box3& bounds) const;
+  // How many supports a random line through the bounds crosses, on average.
+  double expected_supports_per_line() const;
 
   const Group& group_of(uint32_t triangle) const {
     auto it = std::upper_bound(groups.begin(), groups.end(), triangle,
