@@ -12,11 +12,7 @@ TriangleFrame triangle_frame(const Triangle& t) {
   f.area = 0.5 * cross_length;
   if (!(cross_length > 0.0) || !std::isfinite(cross_length)) return f;
   f.normal = cross / cross_length;
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 edge = v[(k + 1) % 3] - v[k];
-    f.length[k] = glm::length(edge);
-    f.direction[k] = edge / f.length[k];
-  }
+  for (int k = 0; k < 3; ++k) f.length[k] = glm::length(v[(k + 1) % 3] - v[k]);
   return f;
 }
 
