@@ -246,8 +246,11 @@ RTCDeviceTy* shared_device() {
 SceneBuild::SceneBuild() : lock_(build_mutex) {
   start_ = device_bytes.load();
   scene_ = rtcNewScene(shared_device());
-  // The Morton builder: a million supports in about half a second on two cores, and half the
-  // memory of the SAH builder; the spans are exact either way, only traversal changes.
+  // The Morton builder for the level above the geometries. Embree builds each user geometry's
+  // own hierarchy with the geometry's build quality, left at its default (the SAH builder):
+  // the Morton build of the dragon's supports took half the time but held 13 MB more, a loss
+  // where the pages are first touched (docs/benchmarks.md, twentieth step). The spans are
+  // exact either way, only traversal changes.
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_LOW);
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
 }

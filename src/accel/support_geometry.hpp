@@ -69,7 +69,7 @@ RTCDeviceTy* shared_device();
 // read before and after, counts this scene's bytes alone.
 class SceneBuild {
  public:
-  SceneBuild();  // a new empty scene: Morton builder, robust traversal
+  SceneBuild();  // a new empty scene: robust traversal, Embree's default builders (the .cpp)
   ~SceneBuild();
   SceneBuild(const SceneBuild&) = delete;
   SceneBuild& operator=(const SceneBuild&) = delete;
