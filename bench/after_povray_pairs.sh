@@ -19,12 +19,7 @@ view=(--camera 0,60,-520 --look-at 0,0,0 --angle 50 --light -300,500,-600 --size
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
-seconds() {  # wall seconds of one command, its output thrown away
-  local start
-  start=$(date +%s.%N)
-  "$@" >/dev/null 2>&1 || die "failed: $*"
-  awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.3f\n", b - a }'
-}
+source bench/timing.sh
 
 for ((i = 0; i < rounds; ++i)); do
   for which in A B; do
@@ -36,7 +31,6 @@ for ((i = 0; i < rounds; ++i)); do
     echo "$which $t $(awk -v t="$t" -v y="$y" 'BEGIN { printf "%.3f", t / y }') (Y $y)"
   done
 done | tee "$out/lines"
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 for which in A B; do
   echo "$which: median $(awk -v w=$which '$1 == w { print $2 }' "$out/lines" | median) s," \
        "median ratio to Y $(awk -v w=$which '$1 == w { print $3 }' "$out/lines" | median)"

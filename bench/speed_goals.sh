@@ -37,22 +37,17 @@ commands=(
   "$build/convray scenes/soup.pov -o $out/soup.png"
 )
 
-seconds() {  # wall seconds of one command, its output thrown away
-  local start
-  start=$(date +%s.%N)
-  $1 >/dev/null 2>&1 || die "failed: $1"
-  awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.3f\n", b - a }'
-}
+source bench/timing.sh
 
 declare -A times
 for ((run = 1; run <= runs; ++run)); do
   for i in "${!commands[@]}"; do
-    times[$run,$i]=$(seconds "${commands[$i]}")
+    # shellcheck disable=SC2086  # each row's command is split into its words
+    times[$run,$i]=$(seconds ${commands[$i]})
     echo "run $run: ${names[$i]}: ${times[$run,$i]} s" >&2
   done
 done
 
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 {
   echo "| render | median s | median ratio to Y (same run) | goal ratio |"
   echo "| --- | ---: | ---: | ---: |"
