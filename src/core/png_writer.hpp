@@ -4,7 +4,7 @@
 // the image libraries behind the other formats (core/image_plugin.hpp), so a render starts
 // without loading them.
 //
-// What is stored is what convray wrote through OpenImageIO before (tests/render/
+// What is stored is what convray wrote through OpenImageIO before (tests/images/
 // png_writer_test.cpp compares the two): 8-bit RGB, no alpha, no interlacing;
 //   PixelEncoding::linear   encode_srgb, then quantised; the file says sRGB (an sRGB chunk,
 //                           with the gAMA and cHRM chunks PNG asks to go with it)

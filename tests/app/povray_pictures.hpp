@@ -2,7 +2,6 @@
 // Whole scenes rendered by the installed POV-Ray 3.7 and by the convray binary with the same
 // switches (small, without anti-aliasing), compared pixel by pixel: PSNR over the 8-bit RGB
 // values, as scripts/compare-povray.sh --examples measures. Tests skip without povray.
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +13,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "reference/png_pixels.hpp"
 
 namespace convray::testing {
 
@@ -27,15 +27,9 @@ inline bool povray_installed() {
   GTEST_SKIP() << "povray is not installed (scripts/setup.sh installs it); " \
                   "this test compares with POV-Ray 3.7's own picture"
 
-// 8-bit RGB values of a picture; empty if it cannot be read.
+// 8-bit RGB values of a PNG picture; empty if it cannot be read.
 inline std::vector<unsigned char> read_rgb8(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) return {};
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<unsigned char> pixels(size_t(spec.width) * spec.height * 3);
-  const bool read = in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data());
-  in->close();
-  return read ? pixels : std::vector<unsigned char>{};
+  return ::convray::reference::read_png_rgb8(path).rgb;
 }
 
 // 99 for identical pictures; -1 if they differ in size or cannot be read.

@@ -2,7 +2,6 @@
 // scene text and as the records our parser would make of it; the test runs the installed
 // `povray` (skipped when there is none) and compares the two 8-bit sRGB images by PSNR.
 // With CONVRAY_COMPARE_DIR set, both pictures are kept there (NAME.povray.png, NAME.convray.png).
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -19,6 +18,7 @@
 #include "core/image_file.hpp"
 #include "render/render_scene.hpp"
 #include "scene_records.hpp"
+#include "reference/png_pixels.hpp"
 
 namespace convray::render {
 namespace {
@@ -43,17 +43,14 @@ std::vector<uint8_t> povray_render(const std::string& name, const std::string& s
                               std::to_string(kWidth) + " +H" + std::to_string(kHeight) +
                               (antialias ? " +A0.3 +R3 -J" : " -A") + " -D -GA > /dev/null 2>&1";
   if (std::system(command.c_str()) != 0) return {};
-  auto in = OIIO::ImageInput::open(image.string());
-  if (!in) return {};
-  std::vector<uint8_t> pixels(size_t(kWidth) * kHeight * 3);
-  const bool read = in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data());
-  in->close();
+  const reference::PngPixels pixels = reference::read_png_rgb8(image.string());
+  const bool read = pixels.width == kWidth && pixels.height == kHeight;
   if (const char* keep = std::getenv("CONVRAY_COMPARE_DIR")) {
     fs::copy_file(image, fs::path(keep) / (name + ".povray.png"),
                   fs::copy_options::overwrite_existing);
   }
   fs::remove_all(folder);
-  return read ? pixels : std::vector<uint8_t>{};
+  return read ? pixels.rgb : std::vector<uint8_t>{};
 }
 
 // Our picture of the records, quantised as our PNG writer does (sRGB, rounded).

@@ -12,7 +12,6 @@
 
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
 
 #include "app/file_watch.hpp"
 #include "app/view_camera.hpp"
@@ -26,6 +25,7 @@
 #include "render/function_sources.hpp"
 #include "render/render_scene.hpp"
 #include "sdl/parser.hpp"
+#include "reference/png_pixels.hpp"
 
 namespace convray::app {
 namespace {
@@ -242,7 +242,7 @@ TEST(ViewSession, PicksTheMemberOfAUnionUnderThePixel) {
 
 // A mesh is shown as `convray quick` renders it (its radius, framing, light and clay): the
 // session's picture in the PNG writer's 8-bit levels against quick's file, read back by
-// OpenImageIO.
+// libpng (reference/png_pixels.hpp).
 TEST(ViewSession, AMeshLooksAsQuickRendersIt) {
   const std::string mesh = kScenes + "/models/soup.obj";
   const fs::path png = fs::temp_directory_path() / ("convray-quick-" + std::to_string(::getpid()) + ".png");
@@ -250,11 +250,10 @@ TEST(ViewSession, AMeshLooksAsQuickRendersIt) {
                               std::to_string(kW) + "x" + std::to_string(kH) + " -o " +
                               png.string() + " > /dev/null 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  auto in = OIIO::ImageInput::open(png.string());
-  ASSERT_TRUE(in);
-  std::vector<uint8_t> quick(size_t(kW) * kH * 3);
-  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, quick.data()));
-  in->close();
+  const reference::PngPixels read = reference::read_png_rgb8(png.string());
+  ASSERT_EQ(read.width, kW) << read.error;
+  ASSERT_EQ(read.height, kH);
+  const std::vector<uint8_t>& quick = read.rgb;
   fs::remove(png);
 
   ViewOptions o = soup_options();
