@@ -12,7 +12,6 @@
 
 #include <unistd.h>
 
-
 #include "app/file_watch.hpp"
 #include "app/view_camera.hpp"
 #include "app/view_edits.hpp"
