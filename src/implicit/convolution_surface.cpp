@@ -10,6 +10,7 @@
 
 #include "accel/support_shapes.hpp"
 #include "implicit/inside_balls.hpp"
+#include "implicit/near_hit.hpp"
 #include "implicit/reference_tracer.hpp"
 #include "implicit/repeated_triangles.hpp"
 #include "implicit/support_cache.hpp"
@@ -312,8 +313,10 @@ std::optional<SurfaceHit> ConvolutionSurface::first_hit(const Ray& ray, double t
   thread_local std::vector<double> found;
   found.clear();
   std::optional<Vec3> gradient;
-  find_roots(*impl_, ray, tmin, tmax, RootMode::first, found, stats, &gradient);
+  NearHit near;
+  find_roots(*impl_, ray, tmin, tmax, RootMode::first, found, stats, &gradient, nullptr, &near);
   if (found.empty()) return std::nullopt;
+  if (near.bend >= 0.0) NearHits::remember(*impl_, near);
   if (!gradient) return make_surface_hit(*this, ray, found.front());
   return surface_hit_from_gradient(ray, found.front(), *gradient);
 }
@@ -343,7 +346,7 @@ bool ConvolutionSurface::occluded(const Ray& ray, double tmin, double tmax,
   InsideBall inside;
   const bool look = InsideBalls::worth_looking(*impl_);
   find_roots(*impl_, ray, tmin, tmax, RootMode::any, found, stats, nullptr,
-             look ? &inside : nullptr);
+             look ? &inside : nullptr, nullptr, NearHits::find(*impl_));
   if (found.empty()) return false;
   InsideBalls::remember(*impl_, look ? &inside : nullptr);
   return true;

@@ -32,6 +32,10 @@ struct SphereSweepRequest {
   std::optional<Vec3>* gradient = nullptr;
   // With RootMode any: where to leave a ball inside the surface (find_roots); may be null.
   InsideBall* inside = nullptr;
+  // The window march's near-hit sample, out (RootMode first) and in (RootMode any); the
+  // sphere sweep has no use for them (find_roots).
+  NearHit* near_hit = nullptr;
+  const NearHit* start = nullptr;
 };
 
 // Appends the roots in [tmin, tmax] of the field of sphere supports, ascending; with RootMode

@@ -364,7 +364,7 @@ bool solve_range(const ConvolutionSurface::Impl& surface, const SphereSweepReque
         tracer.solve_cluster(cluster, tmin, tmax, mode, out);
       } else {
         march_cluster(surface, ray, cluster, lines, tmin, tmax, mode, out, stats,
-                      request.gradient, request.inside);
+                      request.gradient, request.inside, request.near_hit, request.start);
       }
     }
     if (mode != RootMode::all && out.size() > found) return true;
@@ -429,9 +429,10 @@ double hinted_first_chunk(const ConvolutionSurface::Impl& surface, const Ray& ra
 // ends its first chunk just past that hit's depth (hinted_first_chunk).
 void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
                 RootMode mode, std::vector<double>& out, TraceStats& stats,
-                std::optional<Vec3>* first_gradient, InsideBall* inside) {
+                std::optional<Vec3>* first_gradient, InsideBall* inside, NearHit* near_hit,
+                const NearHit* start) {
   ++stats.rays;
-  const SphereSweepRequest request{ray, mode, first_gradient, inside};
+  const SphereSweepRequest request{ray, mode, first_gradient, inside, near_hit, start};
   if (mode == RootMode::all || !surface.gather_in_chunks) {
     solve_range(surface, request, tmin, tmax, out, stats);
     return;

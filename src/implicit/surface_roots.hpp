@@ -18,6 +18,8 @@ enum class RootMode {
   any,    // whether there is one (shadow rays): the first one, found the same way
 };
 
+struct NearHit;  // near_hit.hpp
+
 // A ball where F > T, certified (inside_balls.hpp); radius 0 for none.
 struct InsideBall {
   Vec3 center{0.0};
@@ -28,9 +30,13 @@ struct InsideBall {
 // the exact gradient at the root is put there when the finder had it at hand (the sphere
 // sweep does); it is left empty otherwise. With RootMode any and `inside`, a search that finds
 // a crossing leaves there a ball inside the surface beside it where the window march can
-// certify one cheaply (radius 0 otherwise).
+// certify one cheaply (radius 0 otherwise). With RootMode first and `near_hit`, the window
+// march's exact sample beside the root goes there (near_hit.hpp; its bend stays < 0 where
+// the root came another way); with RootMode any and `start`, a shadow ray that leaves the
+// surface near that sample starts from the bound it gives instead of a sample.
 void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
                 RootMode mode, std::vector<double>& out, TraceStats& stats,
-                std::optional<Vec3>* first_gradient = nullptr, InsideBall* inside = nullptr);
+                std::optional<Vec3>* first_gradient = nullptr, InsideBall* inside = nullptr,
+                NearHit* near_hit = nullptr, const NearHit* start = nullptr);
 
 }  // namespace convray::implicit

@@ -11,6 +11,7 @@
 #include "implicit/down_bend_table.hpp"
 #include "implicit/inside_balls.hpp"
 #include "implicit/line_curvature.hpp"
+#include "implicit/near_hit.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -68,9 +69,9 @@ class ClusterField {
   // where it has a cheap one (LineCurvature::down_anywhere), larger but quick to sum.
   double curvature(double a, double b, bool upward, bool anywhere = false);
   double reach() const { return reach_; }
-  // The sum of Impl::bend_bound over the primitives whose support holds p(t), after an
-  // evaluation at t (which adds the members entered by then).
-  double bend_bound_at(double t) const;
+  // The sum of Impl::bend_bound over the primitives whose support holds p(t) (the members
+  // entered by t are added first).
+  double bend_bound_at(double t);
 
  private:
   struct Member {
@@ -326,7 +327,8 @@ field::FieldSample ClusterField::evaluate(double t) {
   return sum;
 }
 
-double ClusterField::bend_bound_at(double t) const {
+double ClusterField::bend_bound_at(double t) {
+  add_members_entered_by(t);
   double sum = 0.0;
   for (size_t k = 0; k < batches_used_; ++k) {
     const Batch& b = batches_[k];
@@ -426,10 +428,12 @@ struct Bend {
 class Marcher {
  public:
   // `want_gradient`: the first root's gradient is wanted (the hit's normal); see root_gradient.
+  // `near_hit`, `start`: as march_cluster takes them.
   Marcher(const Impl& s, ClusterField& field, RootMode mode, bool want_gradient,
-          std::vector<double>& out, TraceStats& stats)
+          std::vector<double>& out, TraceStats& stats, NearHit* near_hit,
+          const NearHit* start)
       : s_(s), field_(field), mode_(mode), want_gradient_(want_gradient), out_(out),
-        stats_(stats) {}
+        stats_(stats), near_hit_(near_hit), start_(start) {}
 
   // Whether the search is over (a root found where one is enough). `at_cluster_entry`: `from`
   // is where the ray enters the cluster's first support.
@@ -448,6 +452,9 @@ class Marcher {
   Value sample_towards(double t) {
     return t >= field_.reach() ? Value{t, -1.0} : value(t);
   }
+  // The march's first point inside the cluster: the near-hit bound where it holds F below T
+  // (near_hit.hpp), else a sample.
+  Value first_value(double t);
   bool bracket(const Value& a, const Value& b, const Value* third = nullptr);
   double polish_with_gradient(const Value& a, const Value& b, double t, double tolerance);
   bool search_window(const Value& a, const Value& b, Bend known = {});
@@ -474,6 +481,8 @@ class Marcher {
   double last_root_ = kInfinity;
   double inside_ = kInfinity;
   std::optional<Vec3> root_gradient_;
+  NearHit* near_hit_;
+  const NearHit* start_;
 };
 
 // A sign change between a and b: its root, refined on the exact field (for RootMode::any a
@@ -516,6 +525,9 @@ double Marcher::polish_with_gradient(const Value& a, const Value& b, double t, d
                           10.0 * std::abs(d2 / slope) * step * step <= tolerance);
   if (converged && t - step > a.t && t - step < b.t) {
     root_gradient_ = at.gradient;
+    if (near_hit_) {
+      *near_hit_ = {field_.ray().at(t), at.value, at.gradient, 2.0 * field_.bend_bound_at(t)};
+    }
     return t - step;
   }
   root_gradient_.reset();
@@ -610,12 +622,24 @@ Marcher::Step Marcher::step_from(const Value& a, double to, double min_step,
   }
 }
 
+Value Marcher::first_value(double t) {
+  if (start_ && mode_ == RootMode::any && start_->bend >= 0.0) {
+    const Vec3 x = field_.ray().at(t);
+    const double reach = kNearHitReach * s_.min_radius;
+    if (glm::dot(x - start_->point, x - start_->point) <= reach * reach) {
+      const double bound = field_bound_near(*start_, x, 2.0 * field_.bend_bound_at(t));
+      if (bound < s_.threshold) return {t, bound / s_.threshold - 1.0};
+    }
+  }
+  return value(t);
+}
+
 bool Marcher::march(double from, double to, bool at_cluster_entry) {
   const double min_step = kMinStep * s_.min_radius, max_step = kMaxStep * s_.min_radius;
   // Where the ray enters the cluster's first support, every field of the cluster is zero
   // (each kernel vanishes at its support's edge, and no other support has begun): F = 0 < T,
   // known without an evaluation.
-  Value a = at_cluster_entry ? Value{from, -1.0} : value(from);
+  Value a = at_cluster_entry ? Value{from, -1.0} : first_value(from);
   if (a.g == 0.0 && bracket(a, a)) return true;
   Value before = a;
   bool have_before = false;
@@ -664,16 +688,24 @@ void march_cluster(const Impl& surface, const Ray& ray,
                    std::span<const accel::SupportInterval> cluster,
                    const accel::TriangleLineTable& lines, double tmin, double tmax,
                    RootMode mode, std::vector<double>& out, TraceStats& stats,
-                   std::optional<Vec3>* first_gradient, InsideBall* inside) {
+                   std::optional<Vec3>* first_gradient, InsideBall* inside, NearHit* near_hit,
+                   const NearHit* start) {
   const double from = std::max(tmin, cluster.front().enter);
   ClusterField field(surface, ray, cluster, lines, from, stats);
   const double to = std::min(tmax, field.reach());
   if (!(from < to)) return;
-  Marcher marcher(surface, field, mode, first_gradient != nullptr, out, stats);
+  Marcher marcher(surface, field, mode, first_gradient != nullptr, out, stats,
+                  mode == RootMode::first ? near_hit : nullptr, start);
   if (!marcher.march(from, to, from == cluster.front().enter)) return;
   if (mode == RootMode::first && first_gradient) {
-    *first_gradient = marcher.root_gradient() ? *marcher.root_gradient()
-                                              : field.sample(marcher.last_root()).gradient;
+    if (marcher.root_gradient()) {
+      *first_gradient = *marcher.root_gradient();
+    } else {
+      const double t = marcher.last_root();
+      const field::FieldSample at = field.sample(t);
+      *first_gradient = at.gradient;
+      if (near_hit) *near_hit = {ray.at(t), at.value, at.gradient, 2.0 * field.bend_bound_at(t)};
+    }
   }
   if (mode == RootMode::any && inside) *inside = probe_inside(surface, field, marcher.inside(), to);
 }

@@ -36,11 +36,12 @@ namespace convray::implicit {
 // and `first_gradient`, the exact gradient at the root is put there. RootMode::any appends a
 // point past the first sign change, unrefined; with `inside`, the largest ball certified
 // inside the surface (inside_balls.hpp) around a few points from the first sample found
-// inside on, within [tmin, tmax].
+// inside on, within [tmin, tmax]. `near_hit` and `start`: as find_roots takes them.
 void march_cluster(const ConvolutionSurface::Impl& surface, const Ray& ray,
                    std::span<const accel::SupportInterval> cluster,
                    const accel::TriangleLineTable& lines, double tmin, double tmax,
                    RootMode mode, std::vector<double>& out, TraceStats& stats,
-                   std::optional<Vec3>* first_gradient, InsideBall* inside = nullptr);
+                   std::optional<Vec3>* first_gradient, InsideBall* inside = nullptr,
+                   NearHit* near_hit = nullptr, const NearHit* start = nullptr);
 
 }  // namespace convray::implicit

@@ -9,17 +9,17 @@
 #include <vector>
 
 #include "core/coherent_rays.hpp"
-#include "field/threshold.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/inside_balls.hpp"
 #include "implicit/surface_impl.hpp"
-#include "mesh/procedural.hpp"
-#include "scene/mesh_skeleton.hpp"
+#include "mixed_object.hpp"
 
 namespace convray::implicit {
 namespace {
 
-constexpr double kRadius = 0.3;
+using test_objects::kMixedRadius;
+using test_objects::mixed_object;
+constexpr double kRadius = kMixedRadius;
 
 Vec3 random_unit(std::mt19937_64& rng) {
   std::normal_distribution<double> n(0.0, 1.0);
@@ -27,26 +27,6 @@ Vec3 random_unit(std::mt19937_64& rng) {
     const Vec3 v{n(rng), n(rng), n(rng)};
     if (glm::length(v) > 1e-3) return glm::normalize(v);
   }
-}
-
-// A torus of triangles (many supports along a line), with a point, a segment, an arc and POV-Ray
-// blob components of other radii and strengths beside it: every kind bend_bound knows.
-scene::ConvolutionObject mixed_object() {
-  scene::ConvolutionObject object;
-  const mesh::TriangleSoup soup = mesh::torus(1.0, 0.35, 64, 32);
-  scene::MeshComponent m;
-  m.triangles = scene::soup_triangles(soup);
-  m.weight = {1.0, kRadius};
-  object.meshes.push_back(m);
-  object.points.push_back({Vec3(0.0, 0.0, 0.0), {0.6, 0.5}});
-  object.segments.push_back({{Vec3(-0.3, 0.6, 0.0), Vec3(0.4, 0.7, 0.1)}, {1.3, 0.25}});
-  field::Arc arc;
-  EXPECT_TRUE(field::arc_through(Vec3(0.0, -0.6, 0.5), Vec3(0.3, -0.8, 0.6), Vec3(0.7, -0.6, 0.5), arc));
-  object.arcs.push_back({arc, {0.9, 0.35}});
-  object.blob_spheres.push_back({Vec3(1.0, 0.2, -0.3), {0.8, 0.4}});
-  object.blob_cylinders.push_back({Vec3(-1.0, -0.2, 0.0), Vec3(-1.0, 0.4, 0.3), {0.7, 0.3}});
-  object.threshold = field::threshold_for_offset(1.0, kRadius, 0.5 * kRadius);
-  return object;
 }
 
 // Along any line, no primitive's field bends down faster than its bend bound (second
