@@ -12,8 +12,7 @@
 #include "field/threshold.hpp"
 #include "implicit/convolution_surface.hpp"
 #include "implicit/surface_impl.hpp"
-#include "mesh/procedural.hpp"
-#include "scene/mesh_skeleton.hpp"
+#include "test_objects.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -23,11 +22,7 @@ constexpr double kRadius = 0.3;
 // A dense torus: many supports a line, so its first-hit searches gather in chunks.
 ConvolutionSurface dense_torus() {
   scene::ConvolutionObject object;
-  const mesh::TriangleSoup soup = mesh::torus(1.0, 0.35, 96, 48);
-  scene::MeshComponent m;
-  m.triangles = scene::soup_triangles(soup);
-  m.weight = {1.0, kRadius};
-  object.meshes.push_back(m);
+  object.meshes.push_back(test_objects::torus_mesh(96, 48, kRadius));
   object.threshold = field::threshold_for_offset(1.0, kRadius, 0.5 * kRadius);
   return ConvolutionSurface(object, nullptr, Tracer::fast);
 }

@@ -12,7 +12,7 @@
 #include "implicit/convolution_surface.hpp"
 #include "implicit/inside_balls.hpp"
 #include "implicit/surface_impl.hpp"
-#include "mixed_object.hpp"
+#include "test_objects.hpp"
 
 namespace convray::implicit {
 namespace {
@@ -36,28 +36,15 @@ Vec3 random_unit(std::mt19937_64& rng) {
 TEST(InsideBalls, BendBoundHoldsForEveryKindOfPrimitive) {
   const ConvolutionSurface surface(mixed_object(), nullptr, Tracer::fast);
   const ConvolutionSurface::Impl& s = surface.impl();
-  std::mt19937_64 rng(46);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const Box3 box = s.index->bounds();
-  std::vector<uint32_t> ids;
   double closest = 0.0;  // the most negative second difference over the bound, per primitive
   int samples = 0;
-  for (int trial = 0; trial < 40000; ++trial) {
-    const Vec3 p = box.lo + Vec3(unit(rng), unit(rng), unit(rng)) * (box.hi - box.lo);
-    ids.clear();
-    s.index->contain(p, ids);
-    const Vec3 u = random_unit(rng);
-    const double h = 1e-3 * s.min_radius;
-    for (uint32_t id : ids) {
-      const double second =
-          (s.value(id, p + h * u) - 2.0 * s.value(id, p) + s.value(id, p - h * u)) / (h * h);
-      const double bound = s.bend_bound(id);
-      ASSERT_GT(bound, 0.0) << id;
-      EXPECT_GE(second, -bound * (1.0 + 1e-6) - 1e-6) << "primitive " << id << " trial " << trial;
-      closest = std::min(closest, second / bound);
-      ++samples;
-    }
-  }
+  test_objects::for_each_second_difference(s, 46, 40000, [&](uint32_t id, double second, int trial) {
+    const double bound = s.bend_bound(id);
+    ASSERT_GT(bound, 0.0) << id;
+    EXPECT_GE(second, -bound * (1.0 + 1e-6) - 1e-6) << "primitive " << id << " trial " << trial;
+    closest = std::min(closest, second / bound);
+    ++samples;
+  });
   EXPECT_GT(samples, 20000);
   EXPECT_LT(closest, -1.0 / 3.0);
 }

@@ -13,7 +13,7 @@
 #include "implicit/near_hit.hpp"
 #include "implicit/surface_impl.hpp"
 #include "implicit/surface_roots.hpp"
-#include "mixed_object.hpp"
+#include "test_objects.hpp"
 #include "reference/random_vectors.hpp"
 
 namespace convray::implicit {
@@ -37,27 +37,14 @@ double rise_bound_at(const ConvolutionSurface::Impl& s, const Vec3& p) {
 TEST(NearHit, UpwardBendWithinTwiceTheBendBound) {
   const ConvolutionSurface surface(mixed_object(), nullptr, Tracer::fast);
   const ConvolutionSurface::Impl& s = surface.impl();
-  std::mt19937_64 rng(91);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const Box3 box = s.index->bounds();
-  std::vector<uint32_t> ids;
   double closest = 0.0;  // the largest second difference over the bound
   int samples = 0;
-  for (int trial = 0; trial < 40000; ++trial) {
-    const Vec3 p = box.lo + Vec3(unit(rng), unit(rng), unit(rng)) * (box.hi - box.lo);
-    ids.clear();
-    s.index->contain(p, ids);
-    const Vec3 u = convray::testing::random_unit(rng);
-    const double h = 1e-3 * s.min_radius;
-    for (uint32_t id : ids) {
-      const double second =
-          (s.value(id, p + h * u) - 2.0 * s.value(id, p) + s.value(id, p - h * u)) / (h * h);
-      const double bound = 2.0 * s.bend_bound(id);
-      EXPECT_LE(second, bound * (1.0 + 1e-6) + 1e-6) << "primitive " << id << " trial " << trial;
-      closest = std::max(closest, second / bound);
-      ++samples;
-    }
-  }
+  test_objects::for_each_second_difference(s, 91, 40000, [&](uint32_t id, double second, int trial) {
+    const double bound = 2.0 * s.bend_bound(id);
+    EXPECT_LE(second, bound * (1.0 + 1e-6) + 1e-6) << "primitive " << id << " trial " << trial;
+    closest = std::max(closest, second / bound);
+    ++samples;
+  });
   EXPECT_GT(samples, 20000);
   EXPECT_GT(closest, 0.25);
 }
