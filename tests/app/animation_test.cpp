@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "reference/test_folder.hpp"
 #include "app/frame_names.hpp"
 #include "app/ini_file.hpp"
 #include "app/render_options.hpp"
@@ -181,13 +182,6 @@ TEST(FrameNames, PovRaysNumbering) {
 
 class IniTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("convray-ini-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& text) {
     std::ofstream((dir_ / name).string(), std::ios::binary) << text;
     return (dir_ / name).string();
@@ -200,7 +194,8 @@ class IniTest : public ::testing::Test {
     }
     return "(no error)";
   }
-  std::filesystem::path dir_;
+  convray::testing::TestFolder folder_{"ini"};
+  const std::filesystem::path& dir_ = folder_.path();
 };
 
 TEST_F(IniTest, KeysSwitchesCommentsAndQuotes) {

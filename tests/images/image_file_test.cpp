@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "reference/test_folder.hpp"
 #include "util/error.hpp"
 
 namespace convray::render {
@@ -22,14 +23,6 @@ namespace fs = std::filesystem;
 
 class ImageFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("convray-image-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   size_t files_in_folder() const { return size_t(std::distance(fs::directory_iterator(dir_), {})); }
 
@@ -39,7 +32,8 @@ class ImageFile : public ::testing::Test {
             0.7f, 0.8f,   0.9f,   1.0f,  0.25f, 0.75f, 2.0f,  -0.5f, 0.33f, 0.66f, 0.99f, 0.004f};
   }
 
-  fs::path dir_;
+  convray::testing::TestFolder folder_{"image"};
+  const fs::path& dir_ = folder_.path();
 };
 
 struct ReadBack {

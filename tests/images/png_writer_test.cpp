@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "reference/test_folder.hpp"
 #include "core/image_file.hpp"
 #include "util/error.hpp"
 
@@ -31,16 +32,10 @@ namespace fs = std::filesystem;
 
 class PngWriter : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("convray-png-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-  fs::path dir_;
+  convray::testing::TestFolder folder_{"png"};
+  const fs::path& dir_ = folder_.path();
 };
 
 // Floats where rounding is decided: 40 neighbours either side of every level k/255 and of

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "reference/test_folder.hpp"
 #include "app/cli.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
@@ -31,14 +32,6 @@ std::string read_all(const fs::path& path) { return read_file(path); }
 
 class AtomicFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("convray-atomic-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Every name in the folder, sorted: temporaries included (they start with a dot).
   std::vector<std::string> names() const {
     std::vector<std::string> all;
@@ -48,7 +41,8 @@ class AtomicFileTest : public ::testing::Test {
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-  fs::path dir_;
+  convray::testing::TestFolder folder_{"atomic"};
+  const fs::path& dir_ = folder_.path();
 };
 
 // A process id that is certainly free: a child that has exited and been reaped.

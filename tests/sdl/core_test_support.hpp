@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "reference/test_folder.hpp"
 #include "program_options.hpp"
 #include "sdl/parser.hpp"
 
@@ -109,31 +110,17 @@ inline Failure expression_error(const std::string& text) {
 // A folder of files for include tests, removed afterwards.
 class TempFolder {
  public:
-  TempFolder() {
-    path_ = std::filesystem::temp_directory_path() /
-            ("convray_sdl_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-             "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  TempFolder(const TempFolder&) = delete;
-  TempFolder& operator=(const TempFolder&) = delete;
-
   // Writes `text` to `name` in the folder (sub-folders created) and returns its path.
   std::string write(const std::string& name, const std::string& text) const {
-    const std::filesystem::path file = path_ / name;
+    const std::filesystem::path file = folder_.path() / name;
     std::filesystem::create_directories(file.parent_path());
     std::ofstream(file, std::ios::binary) << text;
     return file.string();
   }
-  std::string path() const { return path_.string(); }
+  std::string path() const { return folder_.path().string(); }
 
  private:
-  std::filesystem::path path_;
+  convray::testing::TestFolder folder_{"sdl"};
 };
 
 }  // namespace convray::sdl::core_testing
