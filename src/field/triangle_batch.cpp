@@ -1,5 +1,7 @@
 #include "field/triangle_batch.hpp"
 
+#include "field/pie_angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -80,6 +82,7 @@ struct ChunkState {
   double gx[kChunk], gy[kChunk], gz[kChunk];  // in-plane gradient, all but nothing from θ
   double pie_y[3][kChunk], pie_x[3][kChunk];  // per edge: θ = atan2(pie_y, pie_x)
   double r0sq[kChunk], h[kChunk], scale[kChunk];
+  double pie_scale;  // 1 / R^4: brings the pies' components near 1 before they multiply
   double nx[kChunk], ny[kChunk], nz[kChunk];
   int64_t touches[kChunk], o_inside[kChunk];  // 0 or 1 (64-bit: see Listed below)
 };
@@ -359,6 +362,7 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
                                             acc)) {
       continue;
     }
+    st.pie_scale = 1.0 / (r2 * r2);
     const bool any_pie =
         phase_one<kGradient>(p, r2, inv_norm, from, lanes, lanes_of, views, st);
     try_lean = try_wholly_inside && !any_pie;
@@ -371,12 +375,16 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
 template <bool kGradient>
 void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, bool any_pie,
                               Accumulator& acc) const {
-  // A separate loop, so the call is unconditional and libmvec's SIMD atan2 serves it.
+  // A separate loop, so the call is unconditional and libmvec's SIMD atan2 serves it. Two
+  // calls a lane for three edges (two_pie_angles): atan2 was a tenth of a render.
   double theta[kChunk];
   if (any_pie) {
+    const double scale = st.pie_scale;
+    const auto simd_atan2 = [](double y, double x) { return atan2(y, x); };
 #pragma omp simd
     for (size_t t = 0; t < whole_simd_widths(lanes); ++t) {
-      theta[t] = atan2(st.pie_y[0][t], st.pie_x[0][t]) + atan2(st.pie_y[1][t], st.pie_x[1][t]) +
+      theta[t] = two_pie_angles(st.pie_y[0][t], st.pie_x[0][t], st.pie_y[1][t], st.pie_x[1][t],
+                                scale, simd_atan2) +
                  atan2(st.pie_y[2][t], st.pie_x[2][t]);
     }
   } else {

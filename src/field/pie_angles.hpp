@@ -1,0 +1,37 @@
+#pragma once
+// Two of a triangle's pie angles (TriangleBatch, triangle.cpp: the angle each edge's parts
+// outside the kernel's disk subtend) summed with one atan2: the angle of the product of the
+// pies (x + i y), which is their sum up to a whole turn. Each angle lies in [-pi, pi] with the
+// sign bit of its y (atan2(-0, x) is -0 or -pi), so the sum lies in [0, 2 pi] where neither y
+// has its sign bit set, in [-2 pi, -0] where both have, and in [-pi, pi] otherwise: in the
+// first case a product's angle with its sign bit set is a turn short, in the second one
+// without it a turn over. Rounding keeps to those signs: where the sum is near 0 or near a
+// whole turn in the first two cases, both x have one sign and the product's y is a sum of two
+// products of one sign. A pie (±0, ±0), whose angle is that of (±0, ±1), is made that, so
+// that its signs still count; `scale` (> 0, no angle changes) keeps the product in range.
+// Three pies in one product would leave the turn unknown: their sum spans 3 pi.
+//
+// `atan2` is the caller's (a SIMD variant in the batch's vectorized loop); only selects on
+// comparisons of doubles, which GCC's vectorizer takes where it leaves a bool's loop scalar.
+#include <cmath>
+
+#include "util/math.hpp"
+
+namespace convray::field {
+
+template <class Atan2>
+[[gnu::always_inline]] inline double two_pie_angles(double y0, double x0, double y1, double x1,
+                                                    double scale, Atan2 atan2) {
+  x0 = x0 == 0.0 ? (y0 == 0.0 ? std::copysign(1.0, x0) : x0) : x0 * scale;
+  x1 = x1 == 0.0 ? (y1 == 0.0 ? std::copysign(1.0, x1) : x1) : x1 * scale;
+  y0 *= scale;
+  y1 *= scale;
+  const double angle = atan2(x0 * y1 + y0 * x1, x0 * x1 - y0 * y1);
+  const double signs = std::copysign(1.0, y0) + std::copysign(1.0, y1);  // 2, 0 or -2
+  const double side = std::copysign(1.0, angle);
+  const double short_turn = side < 0.0 ? 2.0 * kPi : 0.0;
+  const double over_turn = side > 0.0 ? -2.0 * kPi : 0.0;
+  return angle + (signs > 0.0 ? short_turn : signs < 0.0 ? over_turn : 0.0);
+}
+
+}  // namespace convray::field
