@@ -641,6 +641,15 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
   // known without an evaluation.
   Value a = at_cluster_entry ? Value{from, -1.0} : first_value(from);
   if (a.g == 0.0 && bracket(a, a)) return true;
+  // Whether there is a root at all (a shadow ray), in a cluster the ray enters from outside
+  // (not the one it starts in, whose field falls away from the surface it leaves): one
+  // sample in the middle, where a ray through a sheet of triangles crosses it and the field
+  // is highest, settles most blocked rays without a window (F >= T there and F = 0 at the
+  // entry: a root between them).
+  if (mode_ == RootMode::any && at_cluster_entry) {
+    const Value middle = value(0.5 * (from + to));
+    if (middle.g >= 0.0 && bracket(a, middle)) return true;
+  }
   Value before = a;
   bool have_before = false;
   while (a.t < to) {
