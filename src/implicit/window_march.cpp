@@ -453,8 +453,9 @@ class Marcher {
     return t >= field_.reach() ? Value{t, -1.0} : value(t);
   }
   // The march's first point inside the cluster: the near-hit bound where it holds F below T
-  // (near_hit.hpp), else a sample.
-  Value first_value(double t);
+  // (near_hit.hpp), else a sample. With the bound, `slope` is F's rate there from the near
+  // hit's gradient (per unit t, as Value's g), for the first step's prediction.
+  Value first_value(double t, double& slope);
   bool bracket(const Value& a, const Value& b, const Value* third = nullptr);
   double polish_with_gradient(const Value& a, const Value& b, double t, double tolerance);
   bool search_window(const Value& a, const Value& b, Bend known = {});
@@ -622,13 +623,16 @@ Marcher::Step Marcher::step_from(const Value& a, double to, double min_step,
   }
 }
 
-Value Marcher::first_value(double t) {
+Value Marcher::first_value(double t, double& slope) {
   if (start_ && mode_ == RootMode::any && start_->bend >= 0.0) {
     const Vec3 x = field_.ray().at(t);
     const double reach = kNearHitReach * s_.min_radius;
     if (glm::dot(x - start_->point, x - start_->point) <= reach * reach) {
       const double bound = field_bound_near(*start_, x, 2.0 * field_.bend_bound_at(t));
-      if (bound < s_.threshold) return {t, bound / s_.threshold - 1.0};
+      if (bound < s_.threshold) {
+        slope = glm::dot(start_->gradient, field_.ray().direction) / s_.threshold;
+        return {t, bound / s_.threshold - 1.0};
+      }
     }
   }
   return value(t);
@@ -639,7 +643,9 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
   // Where the ray enters the cluster's first support, every field of the cluster is zero
   // (each kernel vanishes at its support's edge, and no other support has begun): F = 0 < T,
   // known without an evaluation.
-  Value a = at_cluster_entry ? Value{from, -1.0} : first_value(from);
+  // The first step's chord: none yet, or the rate where the ray leaves a near hit.
+  double first_slope = std::numeric_limits<double>::quiet_NaN();
+  Value a = at_cluster_entry ? Value{from, -1.0} : first_value(from, first_slope);
   if (a.g == 0.0 && bracket(a, a)) return true;
   // Whether there is a root at all (a shadow ray), in a cluster the ray enters from outside
   // (not the one it starts in, whose field falls away from the surface it leaves): one
@@ -654,8 +660,7 @@ bool Marcher::march(double from, double to, bool at_cluster_entry) {
   bool have_before = false;
   while (a.t < to) {
     ++stats_.fits;
-    const double slope = have_before ? (a.g - before.g) / (a.t - before.t)
-                                     : std::numeric_limits<double>::quiet_NaN();
+    const double slope = have_before ? (a.g - before.g) / (a.t - before.t) : first_slope;
     const Step step = step_from(a, to, min_step, max_step, slope);
     const Value b = sample_towards(std::min(to, a.t + step.length));
     if ((a.g < 0.0) != (b.g < 0.0)) {
