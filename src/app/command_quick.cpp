@@ -7,6 +7,8 @@
 #include <new>
 #include <ostream>
 #include <stdexcept>
+#include <variant>
+#include <vector>
 
 #include "scene/quick_scene.hpp"
 #include "app/command_step.hpp"
@@ -15,6 +17,7 @@
 #include "app/usage_error.hpp"
 #include "geometry/implicit_shape.hpp"
 #include "geometry/world.hpp"
+#include "implicit/lent_triangles.hpp"
 #include "implicit/surface.hpp"
 #include "scene/mesh_skeleton.hpp"
 #include "field/threshold.hpp"
@@ -162,7 +165,16 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err, C
   // The camera waits for the bounds, which the world knows once built; it is set after.
   start = Clock::now();
   step.now("building the surface of " + o.mesh_path, kFreeMemory);
-  scene::Scene view = scene::quick_scene(std::move(model.object), scene::Camera{}, Vec3(0.0));
+  std::shared_ptr<scene::Object> record;
+  scene::Scene view =
+      scene::quick_scene(std::move(model.object), scene::Camera{}, Vec3(0.0), &record);
+  // Nothing reads the skeleton's triangles once the surface has them: lent, they are not held
+  // twice while it is made (implicit/lent_triangles.hpp).
+  std::vector<std::vector<field::Triangle>*> meshes;
+  for (scene::MeshComponent& m : std::get<scene::Implicit>(record->shape).object.meshes) {
+    meshes.push_back(&m.triangles);
+  }
+  const implicit::LentTriangles lent(std::move(meshes));
   const geometry::World world(view, nullptr,
                               o.reference ? implicit::Tracer::reference : implicit::Tracer::fast);
   times.build = seconds_since(start);

@@ -12,6 +12,7 @@
 #include "implicit/inside_balls.hpp"
 #include "implicit/near_hit.hpp"
 #include "implicit/reference_tracer.hpp"
+#include "implicit/lent_triangles.hpp"
 #include "implicit/repeated_triangles.hpp"
 #include "implicit/support_cache.hpp"
 #include "implicit/surface_impl.hpp"
@@ -108,16 +109,28 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
   }
   size_t triangle_count = 0;
   for (const scene::MeshComponent& m : object.meshes) triangle_count += m.triangles.size();
-  triangles.reserve(triangle_count);
   std::vector<const scene::MeshComponent*> group_meshes;  // parallel to `groups`
   for (const scene::MeshComponent& m : object.meshes) {
     if (m.triangles.empty()) continue;
     note(m.weight, "mesh");
     const auto mesh = uint32_t(&m - object.meshes.data());
     const std::optional<DistinctTriangles> merged = merge_repeated(m.triangles);
+    // A lent mesh (lent_triangles.hpp) is taken whole where it is the surface's first and
+    // has no repeats, else freed once copied, before the rest of the surface is made.
+    std::vector<field::Triangle>* lent = LentTriangles::take(m.triangles);
+    const auto release = [&] { std::vector<field::Triangle>().swap(*lent); };
+    if (!merged && lent && triangles.empty()) {
+      triangles = std::move(*lent);
+      release();
+      groups.push_back({0, uint32_t(triangles.size()), m.weight.radius, m.weight.strength, mesh});
+      group_meshes.push_back(&m);
+      continue;
+    }
+    if (triangles.capacity() < triangle_count) triangles.reserve(triangle_count);
     if (!merged) {
       const auto first = uint32_t(triangles.size());
       triangles.insert(triangles.end(), m.triangles.begin(), m.triangles.end());
+      if (lent) release();
       groups.push_back({first, uint32_t(triangles.size()), m.weight.radius, m.weight.strength,
                         mesh});
       group_meshes.push_back(&m);
@@ -140,6 +153,7 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
                         k * m.weight.strength, mesh});
       group_meshes.push_back(nullptr);
     }
+    if (lent) release();
   }
   if (!std::isfinite(min_radius)) min_radius = 1.0;  // an empty object
 

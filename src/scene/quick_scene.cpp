@@ -54,8 +54,8 @@ TexturePtr quick_texture() {
   return std::make_shared<const Texture>(texture);
 }
 
-Scene quick_scene(scene::ConvolutionObject object, const Camera& camera,
-                         const Vec3& light) {
+Scene quick_scene(scene::ConvolutionObject object, const Camera& camera, const Vec3& light,
+                  std::shared_ptr<Object>* record_out) {
   Scene scene;
   scene.camera = camera;
   Light lamp;
@@ -69,6 +69,7 @@ Scene quick_scene(scene::ConvolutionObject object, const Camera& camera,
   record->shape = std::move(implicit);
   record->texture = quick_texture();
   record->loc = SourceLoc{"command line"};
+  if (record_out) *record_out = record;
   scene.objects.push_back(std::move(record));
   return scene;
 }

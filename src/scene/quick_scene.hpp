@@ -3,6 +3,8 @@
 // light with shadows, a dark background, and a perspective camera that either frames the
 // object's bounds or looks where the options say. Quick pictures go through the same
 // renderer as scene files (render/render_scene.hpp); this file only chooses the records.
+#include <memory>
+
 #include "scene/convolution_object.hpp"
 #include "scene/look_at_camera.hpp"
 #include "scene/scene.hpp"
@@ -25,8 +27,9 @@ TexturePtr quick_texture();
 Vec3 quick_background();
 
 // The whole scene: `object` (in world space) seen by `camera`, lit by a white point light at
-// `light`, shadows on, assumed_gamma 1.
-Scene quick_scene(scene::ConvolutionObject object, const Camera& camera,
-                         const Vec3& light);
+// `light`, shadows on, assumed_gamma 1. `record` (optional) receives the object's record, for
+// a caller that changes it (command_quick.cpp lends its mesh triangles to the surface).
+Scene quick_scene(scene::ConvolutionObject object, const Camera& camera, const Vec3& light,
+                  std::shared_ptr<Object>* record = nullptr);
 
 }  // namespace convray::scene
