@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 #include <new>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <variant>
@@ -113,13 +114,12 @@ const implicit::Surface& quick_surface(const geometry::World& world) {
   return dynamic_cast<const geometry::ImplicitShape&>(world.shape(0)).surface();
 }
 
-void print_stats(const QuickOptions& o, const implicit::Surface& surface,
-                 const QuickObject& model, const render::RenderStats& s, const PhaseTimes& t,
-                 std::ostream& out) {
+// `bytes`: the surface's memory_bytes().
+void print_stats(const QuickOptions& o, size_t bytes, const QuickObject& model,
+                 const render::RenderStats& s, const PhaseTimes& t, std::ostream& out) {
   const TraceStats& trace = s.trace;
   const double per_query = trace.rays ? double(trace.primitives) / double(trace.rays) : 0.0;
   const size_t primitives = model.triangles + model.segments + model.points;
-  const size_t bytes = surface.memory_bytes();
   out << "image: " << o.width << "x" << o.height << " (" << uint64_t(o.width) * uint64_t(o.height)
       << " pixels)\n"
       << "tracer: "
@@ -175,8 +175,10 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err, C
     meshes.push_back(&m.triangles);
   }
   const implicit::LentTriangles lent(std::move(meshes));
-  const geometry::World world(view, nullptr,
-                              o.reference ? implicit::Tracer::reference : implicit::Tracer::fast);
+  // Let go of before the picture is written, whose buffers then reuse its memory.
+  std::optional<const geometry::World> built;
+  built.emplace(view, nullptr, o.reference ? implicit::Tracer::reference : implicit::Tracer::fast);
+  const geometry::World& world = *built;
   times.build = seconds_since(start);
 
   start = Clock::now();
@@ -196,6 +198,8 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err, C
                             Progress::stderr_is_terminal());
   const render::RenderResult result = render::render_scene(view, world, settings, &progress);
   times.render = seconds_since(start);
+  const size_t surface_bytes = quick_surface(world).memory_bytes();
+  built.reset();
 
   start = Clock::now();
   step.now("writing " + o.output, "give a smaller --size");
@@ -207,7 +211,7 @@ void render_quick(const QuickOptions& o, std::ostream& out, std::ostream& err, C
       << ", T = " << number(threshold) << "): wrote " << o.output << " (" << o.width << "x"
       << o.height << ", " << number(times.load + times.build + times.render + times.write)
       << " s)\n";
-  if (o.stats) print_stats(o, quick_surface(world), model, result.stats, times, out);
+  if (o.stats) print_stats(o, surface_bytes, model, result.stats, times, out);
 }
 
 }  // namespace
