@@ -15,7 +15,7 @@ void DownBendTable::reset(size_t n) {
   entered_ = 0;
   n += kSimdWidth - 1;  // room for sum()'s last SIMD width, from any first live row
   if (n <= enter_.size()) return;
-  for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &r2_, &measure_, &limit_,
+  for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &inverse_r2_, &measure_, &limit_,
                   &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_,
                   &bend_}) {
     v->resize(n);
@@ -39,7 +39,7 @@ void DownBendTable::add(double enter, double exit, const LineCurvature::DownTerm
   anywhere_[k] = t.anywhere;
   weight_[k] = t.weight;
   radius_[k] = t.radius;
-  r2_[k] = t.r2;
+  inverse_r2_[k] = 1.0 / t.r2;
   measure_[k] = t.measure;
   limit_[k] = t.limit;
   triangle_[k] = t.triangle ? 1.0 : 0.0;
@@ -87,7 +87,8 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
     return ordered_sum();
   }
   // Named pointers: the vectorizer does not see through the members.
-  const double *weight = weight_.data(), *radius = radius_.data(), *r2 = r2_.data();
+  const double *weight = weight_.data(), *radius = radius_.data();
+  const double* inverse_r2 = inverse_r2_.data();
   const double *measure = measure_.data(), *limit = limit_.data(), *triangle = triangle_.data();
   const double *h0 = h0_.data(), *h1 = h1_.data(), *any = anywhere_.data();
   const double *o00 = o00_.data(), *o01 = o01_.data(), *o10 = o10_.data(), *o11 = o11_.data();
@@ -97,7 +98,7 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
   const size_t end = first + whole_simd_widths(n - first);
 #pragma omp simd
   for (size_t k = first; k < end; ++k) {
-    const double own = triangle_down_bend(weight[k], radius[k], r2[k], measure[k], limit[k],
+    const double own = triangle_down_bend(weight[k], radius[k], inverse_r2[k], measure[k], limit[k],
                                           h0[k], h1[k], o00[k], o01[k], o10[k], o11[k], o20[k],
                                           o21[k], lo[k], hi[k], a, b);
     // The ended members masked by a product, not a select: GCC sank a load into the select
