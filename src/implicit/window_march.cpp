@@ -30,9 +30,9 @@ constexpr double kRootTolerance = 1e-10;
 // closes the root to the tolerance. One value evaluation fewer per hit than landing within the
 // tolerance itself (the dragon at R = 1: field evaluations 12.8M -> 11.4M); the normal is the
 // exact gradient at that point, within about 1e-5 of a radian of the one at the root (the
-// reference tests: 1.3e-5 at worst; 9e-6 landing within 1e-5, which took one more value
-// evaluation for a twentieth of the dragon's roots at R = 5 and a third at R = 1: field
-// evaluations 90.9M and 9.78M against 94.8M and 10.0M).
+// reference tests: 1.3e-5 at worst). Landing within 1e-5 R instead (9e-6 at worst) cost
+// more value evaluations: the dragon's field evaluations 10.0M and 94.8M at R = 1 and 5,
+// against 9.78M and 90.9M.
 constexpr double kLanding = 1e-4;
 // Windows are at least this fraction of the smallest radius (halved when their chord bound
 // cannot exclude T) ...
