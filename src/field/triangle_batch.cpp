@@ -1,9 +1,9 @@
 #include "field/triangle_batch.hpp"
 
-#include "field/pie_angles.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "field/pie_angles.hpp"
 
 // glibc's libmvec provides SIMD variants of atan2 (_ZGVdN4vv_atan2, _ZGVeN8vv_atan2, ...);
 // declaring the simd attribute lets the vectorizer call them from the pie-slice loop. This
@@ -348,6 +348,7 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
                 e.uz.data(), e.mx.data(), e.my.data(), e.mz.data(), e.length.data()};
   }
   ChunkState st;
+  st.pie_scale = 1.0 / (r2 * r2);
   ListedChunk chunk;
   bool try_lean = try_wholly_inside;
   for (size_t base = 0; base < count; base += kChunk) {
@@ -362,7 +363,6 @@ void TriangleBatch::evaluate(const Vec3& p, double radius, size_t count, Index i
                                             acc)) {
       continue;
     }
-    st.pie_scale = 1.0 / (r2 * r2);
     const bool any_pie =
         phase_one<kGradient>(p, r2, inv_norm, from, lanes, lanes_of, views, st);
     try_lean = try_wholly_inside && !any_pie;

@@ -10,9 +10,9 @@
 
 #include "accel/support_shapes.hpp"
 #include "implicit/inside_balls.hpp"
+#include "implicit/lent_triangles.hpp"
 #include "implicit/near_hit.hpp"
 #include "implicit/reference_tracer.hpp"
-#include "implicit/lent_triangles.hpp"
 #include "implicit/repeated_triangles.hpp"
 #include "implicit/support_cache.hpp"
 #include "implicit/surface_impl.hpp"
