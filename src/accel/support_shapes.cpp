@@ -155,37 +155,99 @@ BoundingBall triangle_bounding_ball(const field::Triangle& triangle, double radi
   return ball;
 }
 
+namespace {
+
+// The bounds the pieces of a triangle's support give its span, joined bound by bound: a piece
+// may give an end without the other (+inf and -inf: no bound), as TriangleSpanBatch's lanes.
+struct SpanBounds {
+  double enter = kInfinity;
+  double exit = -kInfinity;
+
+  static double least(double a, double b) { return b < a ? b : a; }
+  static double most(double a, double b) { return b > a ? b : a; }
+  void add_enter(double t) { enter = least(enter, t); }
+  void add_exit(double t) { exit = most(exit, t); }
+};
+
+// The ends of the chord of the cylinder around the edge a-b that project onto the edge. The
+// body's other ends lie on its end disks, inside the corner balls, which the caller joins.
+void add_capsule_body(SpanBounds& bounds, const Vec3& origin, const Vec3& direction,
+                      const Vec3& a, const Vec3& b, double radius) {
+  const Vec3 axis = b - a;
+  const double length = glm::length(axis);
+  if (!(length > 0.0)) return;
+  const Vec3 u = axis * (1.0 / length);  // as TriangleSpanBatch rounds it
+  const Vec3 w = origin - a;
+  const double dw = glm::dot(direction, u);
+  const double ww = glm::dot(w, u);
+  const Vec3 dp = direction - dw * u;  // components perpendicular to the axis
+  const Vec3 wp = w - ww * u;
+  const double dp2 = glm::dot(dp, dp);
+  if (!(dp2 > 0.0)) return;  // parallel to the edge: its body's ends are on the end disks
+  const double inv_dp2 = reciprocal(dp2);
+  const double tc = -glm::dot(wp, dp) * inv_dp2;
+  const Vec3 closest = wp + tc * dp;
+  const double q2 = glm::dot(closest, closest);
+  const double r2 = radius * radius;
+  if (!(r2 - q2 >= 0.0)) return;
+  const double half = std::sqrt((r2 - q2) * inv_dp2);
+  const double enter = tc - half, exit = tc + half;
+  const double along_enter = ww + enter * dw, along_exit = ww + exit * dw;
+  if (SpanBounds::least(along_enter, length - along_enter) >= 0.0) bounds.add_enter(enter);
+  if (SpanBounds::least(along_exit, length - along_exit) >= 0.0) bounds.add_exit(exit);
+}
+
+// Where the line crosses the faces |height| = R of the prism over the triangle, each counted
+// only over the triangle: the prism's other ends lie on its side faces, every point of which
+// is within R of its edge (inside the edge's capsule, which the caller joins).
+void add_prism_faces(SpanBounds& bounds, const Vec3& origin, const Vec3& direction,
+                     const field::Triangle& triangle, double radius) {
+  Vec3 n = triangle_normal(triangle);
+  const double n_length = glm::length(n);
+  if (!(n_length > 0.0)) return;
+  n *= 1.0 / n_length;  // as TriangleSpanBatch rounds it
+  const double h0 = glm::dot(origin - triangle.a, n);
+  const double h1 = glm::dot(direction, n);
+  if (h1 == 0.0) return;  // parallel to the plane: in and out through side faces
+  const double inv_h1 = reciprocal(h1);
+  const double top = (radius - h0) * inv_h1, bottom = -(radius + h0) * inv_h1;
+  const double enter = SpanBounds::least(top, bottom), exit = SpanBounds::most(top, bottom);
+  const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
+  double g0[3], g1[3];
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 inward = glm::cross(n, vertex[(i + 1) % 3] - vertex[i]);
+    g0[i] = glm::dot(origin - vertex[i], inward);
+    g1[i] = glm::dot(direction, inward);
+  }
+  const auto over_triangle = [&](double t) {
+    return SpanBounds::least(SpanBounds::least(g0[0] + t * g1[0], g0[1] + t * g1[1]),
+                             g0[2] + t * g1[2]);
+  };
+  if (over_triangle(enter) >= 0.0) bounds.add_enter(enter);
+  if (over_triangle(exit) >= 0.0) bounds.add_exit(exit);
+}
+
+}  // namespace
+
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius) {
-  const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
   if (!may_cross(origin, direction, -kInfinity, kInfinity,
                  triangle_bounding_ball(triangle, radius))) {
     return {};
   }
-  Vec3 n = triangle_normal(triangle);
-  const double n_length = glm::length(n);
-  Span span{};
-  if (n_length > 0.0) {
-    n *= 1.0 / n_length;  // as TriangleSpanBatch rounds it
-    // The slab |height| <= R holds the whole support: a cheap rejection first.
-    const double h0 = glm::dot(origin - triangle.a, n);
-    const double h1 = glm::dot(direction, n);
-    const double inv_h1 = reciprocal(h1);
-    Span prism{-kInfinity, kInfinity};
-    clip_half_space_at(radius - h0, -h1, (radius - h0) * inv_h1, prism);
-    clip_half_space_at(radius + h0, h1, -(radius + h0) * inv_h1, prism);
-    if (prism.empty()) return {};
-    for (int i = 0; i < 3 && !prism.empty(); ++i) {
-      const Vec3 inward = glm::cross(n, vertex[(i + 1) % 3] - vertex[i]);
-      clip_half_space(glm::dot(origin - vertex[i], inward), glm::dot(direction, inward), prism);
-    }
-    if (!prism.empty()) span = prism;
-  }
+  SpanBounds bounds;
+  add_prism_faces(bounds, origin, direction, triangle, radius);
+  const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
   for (int i = 0; i < 3; ++i) {
-    span = join(span, capsule_body_span(origin, direction, vertex[i], vertex[(i + 1) % 3], radius));
-    span = join(span, sphere_span(origin, direction, vertex[i], radius));
+    add_capsule_body(bounds, origin, direction, vertex[i], vertex[(i + 1) % 3], radius);
+    const Span ball = sphere_span(origin, direction, vertex[i], radius);
+    if (!ball.empty()) {
+      bounds.add_enter(ball.enter);
+      bounds.add_exit(ball.exit);
+    }
   }
-  return span;
+  if (!(bounds.enter <= bounds.exit)) return {};
+  return {bounds.enter, bounds.exit};
 }
 
 Span arc_span(const Vec3& origin, const Vec3& direction, const field::Arc& arc, double radius) {

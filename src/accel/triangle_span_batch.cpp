@@ -19,7 +19,7 @@ struct P {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
-// An interval being narrowed or joined; empty when !(enter <= exit). Every condition below is
+// An interval being joined; empty when !(enter <= exit). Every condition below is
 // a single comparison inside a select: the vectorizer turns those into blends, but not bools
 // combined with & or stored.
 struct Lane {
@@ -29,30 +29,10 @@ struct Lane {
 [[gnu::always_inline]] inline double least(double a, double b) { return b < a ? b : a; }
 [[gnu::always_inline]] inline double most(double a, double b) { return b > a ? b : a; }
 
-// Any empty interval as (+inf, -inf), which least/most then join as nothing.
-[[gnu::always_inline]] inline Lane normal(Lane s) {
-  return {s.enter <= s.exit ? s.enter : kInfinity, s.enter <= s.exit ? s.exit : -kInfinity};
-}
-
-// Narrows `span` to where g0 + t g1 >= 0, t = -g0 / g1 given (support_shapes.cpp's
-// clip_half_space_at; g1 = 0 ignores t): clips against parallel planes share one reciprocal.
-[[gnu::always_inline]] inline Lane clip_at(double g0, double g1, double t, Lane span) {
-  const double lower = g1 > 0.0 ? t : -kInfinity;  // the bound t gives, if any
-  const double upper = g1 < 0.0 ? t : kInfinity;
-  const double parallel_gap = g1 == 0.0 ? g0 : 0.0;  // < 0: the line is wholly outside
-  return {most(most(span.enter, lower), parallel_gap < 0.0 ? kInfinity : -kInfinity),
-          least(span.exit, upper)};
-}
-
-// 1 / x, with 1 for x = 0 (whose clips ignore t).
+// 1 / x, with 1 for x = 0 (whose callers select another answer).
 [[gnu::always_inline]] inline double reciprocal(double x) { return 1.0 / (x != 0.0 ? x : 1.0); }
 
-// Narrows `span` to where g0 + t g1 >= 0 (support_shapes.cpp's clip_half_space).
-[[gnu::always_inline]] inline Lane clip(double g0, double g1, Lane span) {
-  return clip_at(g0, g1, -g0 * reciprocal(g1), span);
-}
-
-// Adds a normalized piece to the union.
+// Adds a piece's bounds to the union's (+inf and -inf: no bound from the piece).
 [[gnu::always_inline]] inline Lane join(Lane piece, Lane span) {
   return {least(span.enter, piece.enter), most(span.exit, piece.exit)};
 }
@@ -71,14 +51,18 @@ struct Ball {
   return {{q2 <= r2 ? tc - half : kInfinity, q2 <= r2 ? tc + half : -kInfinity}, tc};
 }
 
-// Points within R of the edge's line whose projection lies on the edge (support_shapes.cpp's
-// capsule_body_span), in two stages: up to the divisions, then from them. The loop runs the
-// first stage for all three edges before the second: each body is a chain of a square root,
-// two divisions and another square root, and one edge after the other the chains did not
-// overlap within the processor's reordering window.
+// Where the line crosses the edge's capsule body (points within R of the edge's line whose
+// projection lies on the edge), as the support needs it (support_shapes.cpp's
+// capsule_body_bounds): an end of the infinite cylinder's chord counts only where it projects
+// onto the edge; elsewhere the body's end lies on an end disk, inside the corner's ball, whose
+// span the support joins anyway. No clips against the end planes, so no division by the
+// line's slope along the edge. In two stages: up to the divisions, then from them. The loop
+// runs the first stage for all three edges before the second: each body is a chain of a
+// square root, a division and another square root, and one edge after the other the chains
+// did not overlap within the processor's reordering window.
 struct CapsuleStart {
   P dp, wp;
-  double length, inv_length, dw, ww, dp2, inv_dp2, inv_dw;
+  double length, inv_length, dw, ww, dp2, inv_dp2;
 };
 [[gnu::always_inline]] inline CapsuleStart capsule_start(P o, P d, P a, P b) {
   CapsuleStart c;
@@ -93,26 +77,27 @@ struct CapsuleStart {
   c.wp = sub(w, mul(u, c.ww));
   c.dp2 = dot(c.dp, c.dp);
   c.inv_dp2 = reciprocal(c.dp2);
-  c.inv_dw = reciprocal(c.dw);
   return c;
 }
 [[gnu::always_inline]] inline Lane capsule_end(const CapsuleStart& c, double r2) {
   const double tc = -dot(c.wp, c.dp) * c.inv_dp2;
   const P closest = add(c.wp, mul(c.dp, tc));
-  // Parallel to the axis (dp2 = 0): the whole line, or nothing, by its distance to the axis.
-  const double q2 = c.dp2 > 0.0 ? dot(closest, closest) : dot(c.wp, c.wp);
+  const double q2 = dot(closest, closest);
   const double half = std::sqrt(q2 <= r2 ? (r2 - q2) * c.inv_dp2 : 0.0);
-  Lane span{c.dp2 > 0.0 ? tc - half : -kInfinity, c.dp2 > 0.0 ? tc + half : kInfinity};
-  span = clip_at(c.ww, c.dw, -c.ww * c.inv_dw, span);
-  span = clip_at(c.length - c.ww, -c.dw, (c.length - c.ww) * c.inv_dw, span);
-  const double miss = q2 <= r2 ? c.length : 0.0;  // 0: too far from the axis, or no edge
-  return normal({miss > 0.0 ? span.enter : kInfinity, miss > 0.0 ? span.exit : -kInfinity});
+  const double enter = tc - half, exit = tc + half;
+  const double along_enter = c.ww + enter * c.dw, along_exit = c.ww + exit * c.dw;
+  // A line parallel to the edge (dp2 = 0), a line too far from it, or no edge: nothing the
+  // balls do not hold.
+  const double reach = c.dp2 > 0.0 && c.length > 0.0 ? r2 - q2 : -1.0;
+  const double hold_enter = reach >= 0.0 ? least(along_enter, c.length - along_enter) : -1.0;
+  const double hold_exit = reach >= 0.0 ? least(along_exit, c.length - along_exit) : -1.0;
+  return {hold_enter >= 0.0 ? enter : kInfinity, hold_exit >= 0.0 ? exit : -kInfinity};
 }
 
 // The prism over the triangle, |height| <= R (empty for a zero-area triangle), in two
 // stages: the line's height above the plane and its distances into the three edges' lines
 // (g0 + t g1 >= 0 inside; the edges' inward normals n x edge are not of unit length), which
-// TriangleLineTable keeps as well, then the clips.
+// TriangleLineTable keeps as well, then its faces (prism below).
 struct PrismStart {
   double n_length, h0, h1;
   double g0[3], g1[3];
@@ -134,16 +119,21 @@ struct PrismStart {
   p.g1[2] = dot(d, in_ca);
   return p;
 }
+// Where the line crosses the prism's two faces |height| = R, each counted only where it lies
+// over the triangle (support_shapes.cpp's prism_face_bounds): elsewhere the prism's end is on
+// a side face, whose every point is within R of its edge, inside the edge's capsule. A line
+// parallel to the plane (h1 = 0) meets the prism through side faces only.
+[[gnu::always_inline]] inline double over_triangle(const PrismStart& p, double t) {
+  return least(least(p.g0[0] + t * p.g1[0], p.g0[1] + t * p.g1[1]), p.g0[2] + t * p.g1[2]);
+}
 [[gnu::always_inline]] inline Lane prism(const PrismStart& p, double radius) {
-  Lane span{-kInfinity, kInfinity};
   const double inv_h1 = reciprocal(p.h1);
-  span = clip_at(radius - p.h0, -p.h1, (radius - p.h0) * inv_h1, span);
-  span = clip_at(radius + p.h0, p.h1, -(radius + p.h0) * inv_h1, span);
-  span = clip(p.g0[0], p.g1[0], span);
-  span = clip(p.g0[1], p.g1[1], span);
-  span = clip(p.g0[2], p.g1[2], span);
-  return normal({p.n_length > 0.0 ? span.enter : kInfinity,
-                 p.n_length > 0.0 ? span.exit : -kInfinity});
+  const double top = (radius - p.h0) * inv_h1, bottom = -(radius + p.h0) * inv_h1;
+  const double enter = least(top, bottom), exit = most(top, bottom);
+  const double crossed = p.n_length > 0.0 && p.h1 != 0.0 ? 1.0 : -1.0;
+  const double hold_enter = crossed > 0.0 ? over_triangle(p, enter) : -1.0;
+  const double hold_exit = crossed > 0.0 ? over_triangle(p, exit) : -1.0;
+  return {hold_enter >= 0.0 ? enter : kInfinity, hold_exit >= 0.0 ? exit : -kInfinity};
 }
 
 }  // namespace
@@ -186,6 +176,7 @@ void TriangleSpanBatch::compute_lanes(const Vec3& origin, const Vec3& direction,
 #pragma GCC ivdep  // (omp simd would not vectorize the P aggregates with GCC 12)
   for (size_t k = 0; k < n; ++k) {
     const P a{ax[k], ay[k], az[k]}, b{bx[k], by[k], bz[k]}, e{cx[k], cy[k], cz[k]};
+    // Each piece's bounds, joined bound by bound: a piece may give an end without the other.
     Lane span{kInfinity, -kInfinity};
     const PrismStart p = prism_start(o, d, a, b, e);
     span = join(prism(p, radius), span);

@@ -87,6 +87,54 @@ TEST(TriangleSpanBatch, EndsLieOnTheSupportsBoundary) {
   }
 }
 
+// Lines through the seams between the support's pieces, where each piece gives only the ends
+// it holds (a face's crossing over the triangle, a cylinder's over its edge): on the rim of
+// the prism's faces above an edge, on the rim of an edge's end disk at a corner, and above a
+// corner. The span holds the seam point and ends on the boundary, batch and twin alike.
+TEST(TriangleSpanBatch, LinesThroughTheSeamsBetweenPiecesEndOnTheSupport) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double r = 0.3;
+  for (int trial = 0; trial < 600; ++trial) {
+    const field::Triangle tri{random_point(rng, 1.0), random_point(rng, 1.0),
+                              random_point(rng, 1.0)};
+    const Vec3 corners[3] = {tri.a, tri.b, tri.c};
+    const Vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
+    const int edge = trial % 3;
+    const Vec3 a = corners[edge], b = corners[(edge + 1) % 3];
+    const double side = unit(rng) < 0.5 ? r : -r;
+    Vec3 seam;
+    switch ((trial / 3) % 3) {
+      case 0:  // above the edge, at height R
+        seam = a + unit(rng) * (b - a) + side * n;
+        break;
+      case 1: {  // the end disk's rim at a: R from a, square to the edge
+        const Vec3 u = glm::normalize(b - a);
+        const Vec3 across = glm::normalize(glm::cross(u, random_unit(rng)));
+        seam = a + r * across;
+        break;
+      }
+      default:  // above the corner
+        seam = a + side * n;
+    }
+    const Vec3 d = random_unit(rng), o = seam - 3.0 * d;
+    const Span span = batch_spans({tri}, o, d, r)[0];
+    expect_same(span, triangle_span(o, d, tri, r), "trial " + std::to_string(trial));
+    ASSERT_FALSE(span.empty()) << trial;
+    EXPECT_LE(span.enter, 3.0 + 1e-9) << trial;
+    EXPECT_GE(span.exit, 3.0 - 1e-9) << trial;
+    EXPECT_NEAR(std::sqrt(distance2_to_triangle(o + span.enter * d, tri)), r, 1e-9) << trial;
+    EXPECT_NEAR(std::sqrt(distance2_to_triangle(o + span.exit * d, tri)), r, 1e-9) << trial;
+    for (int i = -6000; i <= 6000; ++i) {
+      const double t = i * 1e-3;
+      if (distance2_to_triangle(o + t * d, tri) < r * r) {
+        ASSERT_GE(t, span.enter - 1e-12) << trial;
+        ASSERT_LE(t, span.exit + 1e-12) << trial;
+      }
+    }
+  }
+}
+
 TEST(TriangleSpanBatch, DegenerateCasesMatchTheScalarTwin) {
   const std::vector<field::Triangle> triangles{
       {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}},        // collinear: its three capsules
