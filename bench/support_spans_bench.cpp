@@ -11,6 +11,7 @@
 
 #include "accel/support_shapes.hpp"
 #include "accel/triangle_span_batch.hpp"
+#include "field/triangle_frame.hpp"
 
 namespace {
 
@@ -55,9 +56,10 @@ void batch_spans(benchmark::State& state) {
   const auto tris = make_triangles(radius);
   std::vector<uint32_t> ids(tris.size());
   std::iota(ids.begin(), ids.end(), 0u);
+  const auto frames = convray::field::triangle_frames(tris);  // once per mesh, as a surface's
   convray::accel::TriangleSpanBatch batch;
   for (auto _ : state) {
-    batch.gather(tris, ids);
+    batch.gather(tris, frames, ids);
     batch.compute(kOrigin, kDirection, radius);
     double sum = 0.0;
     for (size_t k = 0; k < batch.size(); ++k) {

@@ -198,7 +198,7 @@ void span_candidates(const Line& line, std::vector<TriangleCandidate>& candidate
     while (end < candidates.size() && candidates[end].source == &source) {
       ids.push_back(candidates[end++].primitive);
     }
-    batch.gather({source.triangles, source.count}, ids);
+    batch.gather({source.triangles, source.count}, {source.frames, source.count}, ids);
     uint32_t row = SupportInterval::kNoTerms;
     if (terms) {
       row = uint32_t(batch.compute(line.origin, line.direction, source.shared_radius, *terms));

@@ -27,6 +27,7 @@ struct GeometrySource {
   const field::Segment* capsules = nullptr;
   const field::Arc* arcs = nullptr;
   const field::Triangle* triangles = nullptr;
+  const field::TriangleFrame* frames = nullptr;  // one per triangle (the exact spans read them)
   // Triangles: their supports' bounding balls, which the line callback tests. SupportIndex
   // makes them for its own table, the one the callbacks read (inside instances too).
   const BoundingBall* balls = nullptr;

@@ -19,6 +19,8 @@ struct SupportIndex::Impl {
   RTCScene scene = nullptr;
   std::vector<GeometrySource> sources;  // indexed by Embree's geomID, instances included
   std::vector<std::vector<BoundingBall>> balls;  // of each triangle source's supports
+  // The frames of triangle groups that came without them (SupportSources::TriangleGroup).
+  std::vector<std::vector<field::TriangleFrame>> own_frames;
   // The placed hierarchies, kept alive while `scene` refers to them.
   std::vector<std::shared_ptr<const TriangleSupports>> instances;
   // Lists for lines through a common point (line_fans.hpp), where every source is a mesh's
@@ -71,6 +73,7 @@ Collected collect_sources(const SupportSources& in) {
     GeometrySource triangles{Kind::triangle};
     triangles.count = uint32_t(group.triangles.size());
     triangles.triangles = group.triangles.data();
+    triangles.frames = group.frames.size() == group.triangles.size() ? group.frames.data() : nullptr;
     triangles.shared_radius = group.radius;
     add_source(c, triangles, &group, next_id);
   }
@@ -154,6 +157,12 @@ SupportIndex::SupportIndex(const SupportSources& in) : impl_(std::make_unique<Im
       balls[i] = triangle_bounding_ball(s.triangles[i], s.radius(i));
     });
     s.balls = balls.data();
+    if (!s.frames) {
+      std::vector<field::TriangleFrame>& frames = m.own_frames.emplace_back(s.count);
+      tbb::parallel_for(uint32_t(0), s.count,
+                        [&](uint32_t i) { frames[i] = field::triangle_frame(s.triangles[i]); });
+      s.frames = frames.data();
+    }
   }
   detail::SceneBuild build;
   for (size_t g = 0; g < m.sources.size(); ++g) {
@@ -191,6 +200,9 @@ size_t SupportIndex::memory_bytes() const {
   size_t bytes = size_t(impl_->embree_bytes) + impl_->sources.capacity() * sizeof(GeometrySource);
   for (const auto& prebuilt : impl_->instances) bytes += prebuilt->memory_bytes();
   for (const auto& balls : impl_->balls) bytes += balls.capacity() * sizeof(BoundingBall);
+  for (const auto& frames : impl_->own_frames) {
+    bytes += frames.capacity() * sizeof(field::TriangleFrame);
+  }
   return bytes;
 }
 

@@ -19,6 +19,7 @@
 #include "field/arc.hpp"
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
+#include "field/triangle_frame.hpp"
 #include "util/math.hpp"
 
 namespace convray::accel {
@@ -30,6 +31,9 @@ struct SupportSources {
     // In the index's space: exact spans and distances are always computed on these.
     std::span<const field::Triangle> triangles;
     double radius = 1.0;
+    // Optional: their frames (field::triangle_frame, one per triangle, kept alive as the
+    // triangles are), which the exact spans read; without them the index makes its own.
+    std::span<const field::TriangleFrame> frames = {};
     // Optional: a hierarchy over the same triangles in its own space (same order, same radius)
     // and the rigid motion that places it, triangles[i] = placement(prebuilt triangles[i]) up
     // to rounding. Used as an instance when its margin suffices (required_instance_margin);

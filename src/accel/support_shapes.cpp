@@ -5,6 +5,8 @@
 #include <initializer_list>
 #include <limits>
 
+#include "field/triangle_frame.hpp"
+
 namespace convray::accel {
 namespace {
 
@@ -169,12 +171,12 @@ struct SpanBounds {
   void add_exit(double t) { exit = most(exit, t); }
 };
 
-// The ends of the chord of the cylinder around the edge a-b that project onto the edge. The
-// body's other ends lie on its end disks, inside the corner balls, which the caller joins.
+// The ends of the chord of the cylinder around the edge a-b (of length `length`, the frame's)
+// that project onto the edge. The body's other ends lie on its end disks, inside the corner
+// balls, which the caller joins.
 void add_capsule_body(SpanBounds& bounds, const Vec3& origin, const Vec3& direction,
-                      const Vec3& a, const Vec3& b, double radius) {
+                      const Vec3& a, const Vec3& b, double length, double radius) {
   const Vec3 axis = b - a;
-  const double length = glm::length(axis);
   if (!(length > 0.0)) return;
   const Vec3 u = axis * (1.0 / length);  // as TriangleSpanBatch rounds it
   const Vec3 w = origin - a;
@@ -201,11 +203,8 @@ void add_capsule_body(SpanBounds& bounds, const Vec3& origin, const Vec3& direct
 // only over the triangle: the prism's other ends lie on its side faces, every point of which
 // is within R of its edge (inside the edge's capsule, which the caller joins).
 void add_prism_faces(SpanBounds& bounds, const Vec3& origin, const Vec3& direction,
-                     const field::Triangle& triangle, double radius) {
-  Vec3 n = triangle_normal(triangle);
-  const double n_length = glm::length(n);
-  if (!(n_length > 0.0)) return;
-  n *= 1.0 / n_length;  // as TriangleSpanBatch rounds it
+                     const field::Triangle& triangle, const Vec3& n, double radius) {
+  if (!(glm::dot(n, n) > 0.0)) return;  // no area: the frame has no normal
   const double h0 = glm::dot(origin - triangle.a, n);
   const double h1 = glm::dot(direction, n);
   if (h1 == 0.0) return;  // parallel to the plane: in and out through side faces
@@ -235,11 +234,14 @@ Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Trian
                  triangle_bounding_ball(triangle, radius))) {
     return {};
   }
+  // The square roots of the triangle from its frame, as TriangleSpanBatch's lanes take them.
+  const field::TriangleFrame frame = field::triangle_frame(triangle);
   SpanBounds bounds;
-  add_prism_faces(bounds, origin, direction, triangle, radius);
+  add_prism_faces(bounds, origin, direction, triangle, frame.normal, radius);
   const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};
   for (int i = 0; i < 3; ++i) {
-    add_capsule_body(bounds, origin, direction, vertex[i], vertex[(i + 1) % 3], radius);
+    add_capsule_body(bounds, origin, direction, vertex[i], vertex[(i + 1) % 3], frame.length[i],
+                     radius);
     const Span ball = sphere_span(origin, direction, vertex[i], radius);
     if (!ball.empty()) {
       bounds.add_enter(ball.enter);

@@ -3,17 +3,18 @@
 #include <algorithm>
 #include <cmath>
 
+#include "field/triangle_frame.hpp"
+
 namespace convray::accel {
 
 // Each step as TriangleSpanBatch rounds it (triangle_span_batch.cpp: prism, capsule_start,
-// ball): the unit normal by the reciprocal of its length, each edge's inward normal n x edge
-// scaled by the reciprocal of the edge's length.
+// ball): the unit normal and the edges' lengths from the triangle's frame, each edge's inward
+// normal n x edge scaled by the reciprocal of the edge's length.
 TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
                              const field::Triangle& triangle) {
   const Vec3 corner[3] = {triangle.a, triangle.b, triangle.c};
-  Vec3 n = glm::cross(triangle.b - triangle.a, triangle.c - triangle.a);
-  const double n_length = std::sqrt(glm::dot(n, n));
-  n *= 1.0 / (n_length > 0.0 ? n_length : 1.0);
+  const field::TriangleFrame frame = field::triangle_frame(triangle);
+  const Vec3& n = frame.normal;
   TriangleReach reach;
   reach.height[0] = glm::dot(origin - triangle.a, n);
   reach.height[1] = glm::dot(direction, n);
@@ -22,7 +23,7 @@ TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
   for (int k = 0; k < 3; ++k) {
     const Vec3& v = corner[k];
     const Vec3 edge = corner[(k + 1) % 3] - v;
-    const double length = std::sqrt(glm::dot(edge, edge));
+    const double length = frame.length[k];
     const double inverse = 1.0 / (length > 0.0 ? length : 1.0);
     const Vec3 inward = glm::cross(n, edge);
     reach.outside[k][0] = -(glm::dot(origin - v, inward) * inverse);

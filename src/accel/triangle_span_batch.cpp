@@ -64,10 +64,11 @@ struct CapsuleStart {
   P dp, wp;
   double length, inv_length, dw, ww, dp2, inv_dp2;
 };
-[[gnu::always_inline]] inline CapsuleStart capsule_start(P o, P d, P a, P b) {
+// `length`: the edge's, from the triangle's frame.
+[[gnu::always_inline]] inline CapsuleStart capsule_start(P o, P d, P a, P b, double length) {
   CapsuleStart c;
   const P axis = sub(b, a);
-  c.length = std::sqrt(dot(axis, axis));
+  c.length = length;
   c.inv_length = 1.0 / (c.length > 0.0 ? c.length : 1.0);
   const P u = mul(axis, c.inv_length);
   const P w = sub(o, a);
@@ -94,19 +95,17 @@ struct CapsuleStart {
   return {hold_enter >= 0.0 ? enter : kInfinity, hold_exit >= 0.0 ? exit : -kInfinity};
 }
 
-// The prism over the triangle, |height| <= R (empty for a zero-area triangle), in two
-// stages: the line's height above the plane and its distances into the three edges' lines
-// (g0 + t g1 >= 0 inside; the edges' inward normals n x edge are not of unit length), which
-// TriangleLineTable keeps as well, then its faces (prism below).
+// The prism over the triangle, |height| <= R (none for a triangle without area: its frame's
+// normal is zero), in two stages: the line's height above the plane and its distances into
+// the three edges' lines (g0 + t g1 >= 0 inside; the edges' inward normals n x edge are not
+// of unit length), which TriangleLineTable keeps as well, then its faces (prism below).
 struct PrismStart {
-  double n_length, h0, h1;
+  double has_area, h0, h1;  // has_area > 0 where the frame has a normal
   double g0[3], g1[3];
 };
-[[gnu::always_inline]] inline PrismStart prism_start(P o, P d, P a, P b, P c) {
+[[gnu::always_inline]] inline PrismStart prism_start(P o, P d, P a, P b, P c, P n) {
   PrismStart p;
-  const P n0 = cross(sub(b, a), sub(c, a));
-  p.n_length = std::sqrt(dot(n0, n0));
-  const P n = mul(n0, 1.0 / (p.n_length > 0.0 ? p.n_length : 1.0));
+  p.has_area = dot(n, n);
   p.h0 = dot(sub(o, a), n);
   p.h1 = dot(d, n);
   // Written out: the vectorizer takes no inner loops.
@@ -130,7 +129,7 @@ struct PrismStart {
   const double inv_h1 = reciprocal(p.h1);
   const double top = (radius - p.h0) * inv_h1, bottom = -(radius + p.h0) * inv_h1;
   const double enter = least(top, bottom), exit = most(top, bottom);
-  const double crossed = p.n_length > 0.0 && p.h1 != 0.0 ? 1.0 : -1.0;
+  const double crossed = p.has_area > 0.0 && p.h1 != 0.0 ? 1.0 : -1.0;
   const double hold_enter = crossed > 0.0 ? over_triangle(p, enter) : -1.0;
   const double hold_exit = crossed > 0.0 ? over_triangle(p, exit) : -1.0;
   return {hold_enter >= 0.0 ? enter : kInfinity, hold_exit >= 0.0 ? exit : -kInfinity};
@@ -139,6 +138,7 @@ struct PrismStart {
 }  // namespace
 
 void TriangleSpanBatch::gather(std::span<const field::Triangle> triangles,
+                               std::span<const field::TriangleFrame> frames,
                                std::span<const uint32_t> ids) {
   const size_t n = ids.size();
   // Whole SIMD widths, the last triangle repeated: compute() then has no scalar remainder,
@@ -147,17 +147,25 @@ void TriangleSpanBatch::gather(std::span<const field::Triangle> triangles,
   for (auto& vertex : corner_) {
     for (auto& axis : vertex) axis.resize(lanes);
   }
+  for (auto& column : normal_) column.resize(lanes);
+  for (auto& column : length_) column.resize(lanes);
+  area_.resize(lanes);
   size_ = n;
   enter_.resize(lanes);
   exit_.resize(lanes);
   for (size_t k = 0; k < lanes; ++k) {
-    const field::Triangle& t = triangles[ids[std::min(k, n - 1)]];
+    const uint32_t id = ids[std::min(k, n - 1)];
+    const field::Triangle& t = triangles[id];
     const Vec3* v[3] = {&t.a, &t.b, &t.c};
     for (int i = 0; i < 3; ++i) {
       corner_[i][0][k] = v[i]->x;
       corner_[i][1][k] = v[i]->y;
       corner_[i][2][k] = v[i]->z;
     }
+    const field::TriangleFrame& f = frames[id];
+    for (int axis = 0; axis < 3; ++axis) normal_[axis][k] = f.normal[axis];
+    for (int edge = 0; edge < 3; ++edge) length_[edge][k] = f.length[edge];
+    area_[k] = f.area;
   }
 }
 
@@ -170,6 +178,9 @@ void TriangleSpanBatch::compute_lanes(const Vec3& origin, const Vec3& direction,
   const double *ax = corner_[0][0].data(), *ay = corner_[0][1].data(), *az = corner_[0][2].data();
   const double *bx = corner_[1][0].data(), *by = corner_[1][1].data(), *bz = corner_[1][2].data();
   const double *cx = corner_[2][0].data(), *cy = corner_[2][1].data(), *cz = corner_[2][2].data();
+  const double *nx = normal_[0].data(), *ny = normal_[1].data(), *nz = normal_[2].data();
+  const double *lab = length_[0].data(), *lbc = length_[1].data(), *lca = length_[2].data();
+  const double* area = area_.data();
   double* enter = enter_.data();
   double* exit = exit_.data();
   const size_t n = enter_.size();  // whole SIMD widths (gather)
@@ -178,10 +189,11 @@ void TriangleSpanBatch::compute_lanes(const Vec3& origin, const Vec3& direction,
     const P a{ax[k], ay[k], az[k]}, b{bx[k], by[k], bz[k]}, e{cx[k], cy[k], cz[k]};
     // Each piece's bounds, joined bound by bound: a piece may give an end without the other.
     Lane span{kInfinity, -kInfinity};
-    const PrismStart p = prism_start(o, d, a, b, e);
+    const PrismStart p = prism_start(o, d, a, b, e, {nx[k], ny[k], nz[k]});
     span = join(prism(p, radius), span);
-    const CapsuleStart ab = capsule_start(o, d, a, b), be = capsule_start(o, d, b, e),
-                       ea = capsule_start(o, d, e, a);
+    const CapsuleStart ab = capsule_start(o, d, a, b, lab[k]),
+                       be = capsule_start(o, d, b, e, lbc[k]),
+                       ea = capsule_start(o, d, e, a, lca[k]);
     // The balls' own square roots meanwhile (joined in the scalar twin's order after).
     const Ball ball_a = ball(o, d, a, r2), ball_b = ball(o, d, b, r2), ball_e = ball(o, d, e, r2);
     span = join(capsule_end(ab, r2), span);
@@ -205,7 +217,7 @@ void TriangleSpanBatch::compute_lanes(const Vec3& origin, const Vec3& direction,
       terms.hi[k] = most(most(ball_a.along, ball_b.along), ball_e.along);
       terms.within_enter[k] = most(most(ball_a.span.enter, ball_b.span.enter), ball_e.span.enter);
       terms.within_exit[k] = least(least(ball_a.span.exit, ball_b.span.exit), ball_e.span.exit);
-      terms.twice_area[k] = p.n_length;
+      terms.twice_area[k] = p.has_area > 0.0 ? 2.0 * area[k] : 0.0;
       terms.tilt[k] = plane_tilt(p.h1);
     }
   }

@@ -3,7 +3,8 @@
 // branch-free, for the line queries of SupportIndex (whose Embree callbacks only collect the
 // triangles whose support box the line crosses). The same mathematics as triangle_span in
 // support_shapes.hpp, the scalar twin the tests compare this with: the prism over the triangle
-// (|height| <= R) joined to the three edge capsules' bodies and the three corner balls.
+// (|height| <= R) joined to the three edge capsules' bodies and the three corner balls. The
+// triangle's unit normal and edge lengths come from its frame (field/triangle_frame.hpp).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -11,14 +12,17 @@
 #include "accel/support_shapes.hpp"
 #include "accel/triangle_line.hpp"
 #include "field/triangle.hpp"
+#include "field/triangle_frame.hpp"
 #include "util/simd_width.hpp"
 
 namespace convray::accel {
 
 class TriangleSpanBatch {
  public:
-  // Gathers triangles[ids[k]] into the lanes (the storage is reused from call to call).
-  void gather(std::span<const field::Triangle> triangles, std::span<const uint32_t> ids);
+  // Gathers triangles[ids[k]] and their frames (field::triangle_frame, frames[ids[k]]) into
+  // the lanes (the storage is reused from call to call).
+  void gather(std::span<const field::Triangle> triangles,
+              std::span<const field::TriangleFrame> frames, std::span<const uint32_t> ids);
   // spans[k] for the k-th gathered triangle; an empty support crossing gives an empty Span.
   // `direction` is of unit length.
   void compute(const Vec3& origin, const Vec3& direction, double radius);
@@ -36,6 +40,8 @@ class TriangleSpanBatch {
                      TriangleLineTable::Columns terms);
 
   std::vector<double> corner_[3][3];  // corner_[vertex][axis]
+  // From the frames: the square roots of the triangle, made once per mesh.
+  std::vector<double> normal_[3], length_[3], area_;
   std::vector<double> enter_, exit_;  // rounded up to whole SIMD widths
   size_t size_ = 0;
 };

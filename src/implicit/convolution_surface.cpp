@@ -179,10 +179,10 @@ ConvolutionSurface::Impl::Impl(const scene::ConvolutionObject& object, SupportCa
   sources.arcs = arcs;
   sources.arc_radii = arc_radii;
   for (const Group& g : groups) {
+    const size_t count = g.end_triangle - g.first_triangle;
     sources.triangle_groups.push_back(
-        {std::span<const field::Triangle>(triangles).subspan(g.first_triangle,
-                                                              g.end_triangle - g.first_triangle),
-         g.radius});
+        {std::span<const field::Triangle>(triangles).subspan(g.first_triangle, count), g.radius,
+         std::span<const field::TriangleFrame>(frames).subspan(g.first_triangle, count)});
   }
   if (cache) take_prebuilt(sources, group_meshes, *cache);
   index = std::make_unique<accel::SupportIndex>(sources);

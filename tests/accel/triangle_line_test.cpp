@@ -51,7 +51,7 @@ TEST(TriangleLineTable, BatchRowsMatchTheScalarTwinsToTheBit) {
     std::vector<uint32_t> ids(triangles.size());
     std::iota(ids.begin(), ids.end(), 0u);
     TriangleSpanBatch batch;
-    batch.gather(triangles, ids);
+    batch.gather(triangles, field::triangle_frames(triangles), ids);
     TriangleLineTable table;
     table.grow(8);  // rows from an earlier query: the batch appends after them
     const size_t first = batch.compute(o, d, r, table);

@@ -11,6 +11,7 @@
 #include "accel/support_shapes.hpp"
 #include "reference/random_vectors.hpp"
 #include "accel/triangle_span_batch.hpp"
+#include "field/triangle_frame.hpp"
 
 namespace convray::accel {
 namespace {
@@ -32,7 +33,7 @@ std::vector<Span> batch_spans(const std::vector<field::Triangle>& triangles, con
   std::vector<uint32_t> ids(triangles.size());
   std::iota(ids.begin(), ids.end(), 0u);
   TriangleSpanBatch batch;
-  batch.gather(triangles, ids);
+  batch.gather(triangles, field::triangle_frames(triangles), ids);
   batch.compute(o, d, radius);
   std::vector<Span> spans;
   for (size_t k = 0; k < batch.size(); ++k) spans.push_back(batch.span(k));

@@ -218,14 +218,20 @@ TEST(TriangleBatch, AssignedFromFramesEqualsAssignedFromCorners) {
     EXPECT_EQ(a.gradient, b.gradient);
   }
   // The frame itself: the unit normal, the edges' lengths from corner k to corner k + 1, half
-  // the cross product's length as the area; nothing but the area for a zero-area triangle.
+  // the cross product's length as the area; no normal for a zero-area triangle, whose edges
+  // still have their lengths (its support is their capsules).
   const TriangleFrame f = triangle_frame({{0, 0, 0}, {2, 0, 0}, {0, 1, 0}});
   EXPECT_EQ(f.normal, Vec3(0, 0, 1));
   EXPECT_EQ(f.length[0], 2.0);
   EXPECT_DOUBLE_EQ(f.length[1], std::sqrt(5.0));
   EXPECT_EQ(f.length[2], 1.0);
   EXPECT_EQ(f.area, 1.0);
-  EXPECT_FALSE(triangle_frame({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}).has_area());
+  const TriangleFrame line = triangle_frame({{0, 0, 0}, {3, 0, 0}, {1, 0, 0}});
+  EXPECT_FALSE(line.has_area());
+  EXPECT_EQ(line.area, 0.0);
+  EXPECT_EQ(line.length[0], 3.0);
+  EXPECT_EQ(line.length[1], 2.0);
+  EXPECT_EQ(line.length[2], 1.0);
 }
 
 TEST(TriangleBatch, EmptyBatchIsZero) {
