@@ -16,7 +16,7 @@ void DownBendTable::reset(size_t n) {
   n += kSimdWidth - 1;  // room for sum()'s last SIMD width, from any first live row
   if (n <= enter_.size()) return;
   for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &inverse_r2_, &measure_, &limit_,
-                  &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_,
+                  &inverse_limit_, &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_,
                   &bend_}) {
     v->resize(n);
   }
@@ -42,6 +42,7 @@ void DownBendTable::add(double enter, double exit, const LineCurvature::DownTerm
   inverse_r2_[k] = 1.0 / t.r2;
   measure_[k] = t.measure;
   limit_[k] = t.limit;
+  inverse_limit_[k] = inverse_limit(t.limit);
   triangle_[k] = t.triangle ? 1.0 : 0.0;
   h0_[k] = t.reach.height[0];
   h1_[k] = t.reach.height[1];
@@ -90,6 +91,7 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
   const double *weight = weight_.data(), *radius = radius_.data();
   const double* inverse_r2 = inverse_r2_.data();
   const double *measure = measure_.data(), *limit = limit_.data(), *triangle = triangle_.data();
+  const double* inverse_limit = inverse_limit_.data();
   const double *h0 = h0_.data(), *h1 = h1_.data(), *any = anywhere_.data();
   const double *o00 = o00_.data(), *o01 = o01_.data(), *o10 = o10_.data(), *o11 = o11_.data();
   const double *o20 = o20_.data(), *o21 = o21_.data(), *lo = lo_.data(), *hi = hi_.data();
@@ -99,6 +101,7 @@ double DownBendTable::sum(double a, double b, bool anywhere) const {
 #pragma omp simd
   for (size_t k = first; k < end; ++k) {
     const double own = triangle_down_bend(weight[k], radius[k], inverse_r2[k], measure[k], limit[k],
+                                          inverse_limit[k],
                                           h0[k], h1[k], o00[k], o01[k], o10[k], o11[k], o20[k],
                                           o21[k], lo[k], hi[k], a, b);
     // The ended members masked by a product, not a select: GCC sank a load into the select

@@ -41,7 +41,7 @@ class DownBendTable {
   std::vector<double> enter_, exit_, anywhere_;
   // The terms of triangle_down_bend; a member that is not a triangle has triangle_ 0 and
   // bends by its `anywhere_` on any window.
-  std::vector<double> weight_, radius_, inverse_r2_, measure_, limit_, triangle_;
+  std::vector<double> weight_, radius_, inverse_r2_, measure_, limit_, inverse_limit_, triangle_;
   std::vector<double> h0_, h1_, o00_, o01_, o10_, o11_, o20_, o21_, lo_, hi_;
   mutable std::vector<double> bend_;  // per member, for the ordered sum
 };

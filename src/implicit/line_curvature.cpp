@@ -118,7 +118,8 @@ double LineCurvature::bend_down(double a, double b) const {
   if (!triangle_) return weight_ * 4.0 * measure_ / r2_;
   const auto& h = reach_.height;
   const auto& o = reach_.outside;
-  return triangle_down_bend(weight_, radius_, 1.0 / r2_, measure_, down_limit_, h[0], h[1], o[0][0],
+  return triangle_down_bend(weight_, radius_, 1.0 / r2_, measure_, down_limit_,
+                            inverse_limit(down_limit_), h[0], h[1], o[0][0],
                             o[0][1], o[1][0], o[1][1], o[2][0], o[2][1], reach_.along[0],
                             reach_.along[1], a, b);
 }

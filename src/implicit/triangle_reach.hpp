@@ -80,6 +80,8 @@ inline double triangle_nearest_along(double lo, double hi, double a, double b) {
 // along the plane, 2 pi (1 - h^2)^2 / sqrt(3): near a surface, the rays that graze it.
 // 1 / sqrt(q) is the reach's tilt, made with the line's terms.
 inline double triangle_down_limit(const TriangleReach& reach) { return 2.0 * kPi * reach.tilt; }
+// 1 / limit (0 for no limit), made once per member: triangle_down_bend multiplies by it.
+inline double inverse_limit(double limit) { return limit > 0.0 ? 1.0 / limit : 0.0; }
 
 // How far a triangle's field (strength `weight` >= 0) may bend down over [a, b]. Along a unit
 // u the kernel bends by u.H.u = 8 (u.x)^2 / R^4 - 4 (1 - s) / R^2, so it bends down only
@@ -89,24 +91,31 @@ inline double triangle_down_limit(const TriangleReach& reach) { return 2.0 * kPi
 // height and the distance past an edge, u.x by the depth range along the line): no bend down
 // at all where every point of the triangle lies further than R / sqrt(3) along the line (a
 // ray approaching a surface), which the weight 4 (1 - s) / R^2 alone counted in full.
+// The integrand is not that bound everywhere: at any one point p(t) it is a concave quadratic
+// over the plane, bends(t) - Q(xi - xi0) with det Q = q (below), so an area A of it holds no
+// more than the band of area A just under its cap: bends A - A^2 sqrt(q) / (2 pi) =
+// bends A - A^2 / limit (R = 1), growing until A = bends limit / 2 (the whole ellipse).
 // At most the whole plane's downward bend at the window's least height, from `limit`
-// (triangle_down_limit, its value at height 0): 1 / sqrt(q) = limit / 2 pi. R^2's reciprocal
-// is the caller's (made once per member, not per window: the divisions were a fifth of the
-// sums' time on Intel's slower dividers).
+// (triangle_down_limit, its value at height 0): 1 / sqrt(q) = limit / 2 pi. The reciprocals
+// of R^2 and of limit are the caller's (made once per member, not per window: the divisions
+// were a fifth of the sums' time on Intel's slower dividers).
 inline double triangle_down_bend(double weight, double radius, double inverse_r2,
-                                 double measure, double limit, double h0, double h1, double o00,
-                                 double o01, double o10, double o11, double o20, double o21,
-                                 double lo, double hi, double a, double b) {
+                                 double measure, double limit, double inverse_limit, double h0,
+                                 double h1, double o00, double o01, double o10, double o11,
+                                 double o20, double o21, double lo, double hi, double a,
+                                 double b) {
   const double along = triangle_nearest_along(lo, hi, a, b);
   const double c2 = along * along * inverse_r2;  // (u.x / R)^2 at least
   const PlaneNearest near = triangle_plane_nearest(h0, h1, o00, o01, o10, o11, o20, o21, a, b);
   const double s = triangle_nearest_s(inverse_r2, near);
   const double bends = std::max(0.0, 1.0 - std::max(s + 2.0 * c2, 3.0 * c2));
-  const double within = triangle_area_within(radius, measure, near) * bends;
+  const double area = std::min(triangle_area_within(radius, measure, near) * inverse_r2,
+                               0.5 * bends * limit);  // in units of R^2
+  const double within = area * (bends - area * inverse_limit);
   const double inverse_root_q = limit * (0.5 / kPi);
   const double flat = std::max(
       0.0, 1.0 - 3.0 * inverse_root_q * inverse_root_q * (near.height * near.height * inverse_r2));
-  return weight * std::min(4.0 * within * inverse_r2, limit * flat * flat);
+  return weight * std::min(4.0 * within, limit * flat * flat);
 }
 
 }  // namespace convray::implicit
