@@ -73,7 +73,8 @@ Collected collect_sources(const SupportSources& in) {
     GeometrySource triangles{Kind::triangle};
     triangles.count = uint32_t(group.triangles.size());
     triangles.triangles = group.triangles.data();
-    triangles.frames = group.frames.size() == group.triangles.size() ? group.frames.data() : nullptr;
+    const bool framed = group.frames.size() == group.triangles.size();
+    triangles.frames = framed ? group.frames.data() : nullptr;
     triangles.shared_radius = group.radius;
     add_source(c, triangles, &group, next_id);
   }

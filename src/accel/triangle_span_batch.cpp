@@ -53,7 +53,7 @@ struct Ball {
 
 // Where the line crosses the edge's capsule body (points within R of the edge's line whose
 // projection lies on the edge), as the support needs it (support_shapes.cpp's
-// capsule_body_bounds): an end of the infinite cylinder's chord counts only where it projects
+// add_capsule_body): an end of the infinite cylinder's chord counts only where it projects
 // onto the edge; elsewhere the body's end lies on an end disk, inside the corner's ball, whose
 // span the support joins anyway. No clips against the end planes, so no division by the
 // line's slope along the edge. In two stages: up to the divisions, then from them. The loop
@@ -119,7 +119,7 @@ struct PrismStart {
   return p;
 }
 // Where the line crosses the prism's two faces |height| = R, each counted only where it lies
-// over the triangle (support_shapes.cpp's prism_face_bounds): elsewhere the prism's end is on
+// over the triangle (support_shapes.cpp's add_prism_faces): elsewhere the prism's end is on
 // a side face, whose every point is within R of its edge, inside the edge's capsule. A line
 // parallel to the plane (h1 = 0) meets the prism through side faces only.
 [[gnu::always_inline]] inline double over_triangle(const PrismStart& p, double t) {

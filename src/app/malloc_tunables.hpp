@@ -1,7 +1,7 @@
 #pragma once
 // glibc's malloc, tuned for convray's few large arrays: freed memory kept for the next array
 // instead of handed back, and transparent huge pages where they pay on this machine
-// (docs/benchmarks.md, "Start-up in huge pages" and "Huge pages only where they pay"). Only
+// (docs/benchmarks.md, issue 15's fourteenth and twenty-fourth steps). Only
 // the dynamic loader reads GLIBC_TUNABLES, so the program sets it and executes itself once
 // more, first thing in main.
 #include <optional>
@@ -20,7 +20,7 @@ std::optional<double> probe_small_page_touch();
 // a microsecond, and huge pages would save a millisecond or two for a large mesh. On a virtual
 // machine whose host takes back the guest's free memory, the free 2 MiB blocks are the ones
 // taken back: there a huge page's first touch cost 4-5 times its small pages' (1.5-2.5 ms a
-// MiB against 0.35-0.5, an Intel host whose small faults took 1.4-2 us), while on a host
+// MiB against 0.35-0.5, an Intel host whose small faults took 1-2.3 us), while on a host
 // whose small faults took 7-11 us huge pages halved a start-up (docs/benchmarks.md).
 constexpr double kHugePagesPayAbove = 4e-6;
 bool huge_pages_pay(std::optional<double> small_page_touch);

@@ -15,9 +15,9 @@ void DownBendTable::reset(size_t n) {
   entered_ = 0;
   n += kSimdWidth - 1;  // room for sum()'s last SIMD width, from any first live row
   if (n <= enter_.size()) return;
-  for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &inverse_r2_, &measure_, &limit_,
-                  &inverse_limit_, &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_, &o20_, &o21_, &lo_, &hi_,
-                  &bend_}) {
+  for (auto* v : {&enter_, &exit_, &anywhere_, &weight_, &radius_, &inverse_r2_, &measure_,
+                  &limit_, &inverse_limit_, &triangle_, &h0_, &h1_, &o00_, &o01_, &o10_, &o11_,
+                  &o20_, &o21_, &lo_, &hi_, &bend_}) {
     v->resize(n);
   }
 }
