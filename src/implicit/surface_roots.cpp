@@ -426,14 +426,18 @@ double hinted_first_chunk(const ConvolutionSurface::Impl& surface, const Ray& ra
 // cross many supports (Impl::gather_in_chunks): most rays that hit stop in the first chunks,
 // and never pay for the supports behind the hit. Each chunk is solved on its own, from every
 // support that crosses it. A first hit with a normal that passes near the last one of its run
-// ends its first chunk just past that hit's depth (hinted_first_chunk).
+// ends its first chunk just past that hit's depth (hinted_first_chunk). A shadow ray's search
+// (RootMode::any) gathers its whole segment at once: most shadow rays reach the light and
+// need every support anyway, and one walk of the hierarchy costs less than a chunk's each
+// (the dragon at R = 1 and 5, the soup: 0.990, 0.992, 0.986 of the time with chunks, the
+// same pictures).
 void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
                 RootMode mode, std::vector<double>& out, TraceStats& stats,
                 std::optional<Vec3>* first_gradient, InsideBall* inside, NearHit* near_hit,
                 const NearHit* start) {
   ++stats.rays;
   const SphereSweepRequest request{ray, mode, first_gradient, inside, near_hit, start};
-  if (mode == RootMode::all || !surface.gather_in_chunks) {
+  if (mode != RootMode::first || !surface.gather_in_chunks) {
     solve_range(surface, request, tmin, tmax, out, stats);
     return;
   }
