@@ -39,7 +39,8 @@ Span GeometrySource::span(uint32_t i, const Vec3& origin, const Vec3& direction)
     case Kind::arc:
       return arc_span(origin, direction, arcs[i], r);
     case Kind::triangle:
-      return triangle_span(origin, direction, triangles[i], r);
+      return frames ? triangle_span(origin, direction, triangles[i], frames[i], r)
+                    : triangle_span(origin, direction, triangles[i], r);
   }
   return {};
 }

@@ -230,12 +230,16 @@ void add_prism_faces(SpanBounds& bounds, const Vec3& origin, const Vec3& directi
 
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius) {
+  return triangle_span(origin, direction, triangle, field::triangle_frame(triangle), radius);
+}
+
+// The square roots of the triangle from its frame, as TriangleSpanBatch's lanes take them.
+Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
+                   const field::TriangleFrame& frame, double radius) {
   if (!may_cross(origin, direction, -kInfinity, kInfinity,
                  triangle_bounding_ball(triangle, radius))) {
     return {};
   }
-  // The square roots of the triangle from its frame, as TriangleSpanBatch's lanes take them.
-  const field::TriangleFrame frame = field::triangle_frame(triangle);
   SpanBounds bounds;
   add_prism_faces(bounds, origin, direction, triangle, frame.normal, radius);
   const Vec3 vertex[3] = {triangle.a, triangle.b, triangle.c};

@@ -6,6 +6,7 @@
 #include "field/arc.hpp"
 #include "field/segment.hpp"
 #include "field/triangle.hpp"
+#include "field/triangle_frame.hpp"
 #include "util/math.hpp"
 
 namespace convray::accel {
@@ -25,6 +26,9 @@ Span capsule_span(const Vec3& origin, const Vec3& direction, const field::Segmen
                   double radius);
 // Triangle swept by a ball of radius R: the prism over the triangle (|height| <= R) joined to
 // the three edge capsules. Convex, so the union of their intervals is one interval.
+// `frame`: the triangle's (field::triangle_frame), where the caller has it; otherwise made here.
+Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
+                   const field::TriangleFrame& frame, double radius);
 Span triangle_span(const Vec3& origin, const Vec3& direction, const field::Triangle& triangle,
                    double radius);
 // The smallest ball around a triangle: the middle of its longest side for an obtuse one, else

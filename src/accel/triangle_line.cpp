@@ -12,8 +12,12 @@ namespace convray::accel {
 // normal n x edge scaled by the reciprocal of the edge's length.
 TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
                              const field::Triangle& triangle) {
+  return triangle_reach(origin, direction, triangle, field::triangle_frame(triangle));
+}
+
+TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
+                             const field::Triangle& triangle, const field::TriangleFrame& frame) {
   const Vec3 corner[3] = {triangle.a, triangle.b, triangle.c};
-  const field::TriangleFrame frame = field::triangle_frame(triangle);
   const Vec3& n = frame.normal;
   TriangleReach reach;
   reach.height[0] = glm::dot(origin - triangle.a, n);

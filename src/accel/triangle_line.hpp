@@ -14,6 +14,7 @@
 
 #include "accel/support_shapes.hpp"
 #include "field/triangle.hpp"
+#include "field/triangle_frame.hpp"
 #include "util/math.hpp"
 
 namespace convray::accel {
@@ -39,6 +40,9 @@ inline double plane_tilt(double h1) {
 }
 
 // The scalar twins (direction of unit length).
+// `frame`: the triangle's (field::triangle_frame), where the caller has it.
+TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
+                             const field::Triangle& triangle, const field::TriangleFrame& frame);
 TriangleReach triangle_reach(const Vec3& origin, const Vec3& direction,
                              const field::Triangle& triangle);
 // Where all three corners lie within `radius` of p(t): the intersection of the corners' ball

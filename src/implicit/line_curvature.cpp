@@ -101,7 +101,7 @@ LineCurvature::LineCurvature(const field::Triangle& tri, const field::TriangleFr
   var_ = extent.var;
   // The plane's tilt along the line sets the downward limit (the table's twin takes it from
   // the same terms).
-  if (triangle_) reach_ = accel::triangle_reach(ray.origin, ray.direction, tri);
+  if (triangle_) reach_ = accel::triangle_reach(ray.origin, ray.direction, tri, frame);
   down_limit_ = triangle_down_limit(reach_);
   down_anywhere_ = triangle_down_anywhere(weight_, measure_, r2_, down_limit_);
 }
@@ -134,7 +134,7 @@ LineCurvature::DownTerms LineCurvature::triangle_down_terms(const field::Triangl
                                                             const Ray& ray) {
   if (!frame.has_area()) return triangle_down_terms(0.0, strength, radius, TriangleReach{});
   return triangle_down_terms(2.0 * frame.area, strength, radius,
-                             accel::triangle_reach(ray.origin, ray.direction, tri));
+                             accel::triangle_reach(ray.origin, ray.direction, tri, frame));
 }
 
 }  // namespace convray::implicit
