@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "util/bucket_sort.hpp"
 #include "util/simd_width.hpp"
 
 namespace convray::accel {
@@ -22,11 +23,15 @@ constexpr double kConeWidth = 1.0;
 constexpr size_t kCones = 4;
 constexpr size_t kApexes = 2;
 // An apex is given up (its lines walk the hierarchy) once its builds, after kTrialBuilds of
-// them, have tested more than kTestsPerLine balls and blocks per line served: a test costs a
-// few cycles, a line served saves about a walk of the hierarchy (a thousand cycles or more).
-// Where the balls are narrow beside the spacing of the lines (a big mesh at a small radius)
-// cones serve few lines each, and building them would cost more than they save.
+// them, have tested more than kTestsPerLine balls and blocks per line served, plus
+// kTestsPerCandidate per candidate listed: a test costs a few cycles, a line served saves
+// about a walk of the hierarchy, which costs a thousand cycles or more and a callback (some
+// fifty cycles) per candidate. Where the balls are narrow beside the spacing of the lines (a
+// big mesh at a small radius) cones serve few lines each, and building them would cost more
+// than they save. (Without the candidates' share the light of the dragon at R = 5 was given
+// up after its first builds, whose long shadow rays list about 90 candidates each.)
 constexpr uint64_t kTestsPerLine = 64;
+constexpr uint64_t kTestsPerCandidate = 16;
 constexpr uint64_t kTrialBuilds = 8;
 // Balls are grouped in blocks of kBlock consecutive ones (a mesh's triangles come in spatial
 // order: scene/mesh_skeleton.cpp), blocks in groups of kBlock; a cone's build tests the
@@ -75,7 +80,7 @@ struct LineFans::Apex {
   bool off = false;  // given up (kTestsPerLine)
   Vec3 point{0.0};
   double angle = 0.0;  // its cones' half angle
-  uint64_t lines = 0, builds = 0, tests = 0;
+  uint64_t lines = 0, builds = 0, tests = 0, kept = 0;
   std::array<Cone, kCones> cones;
   unsigned next_cone = 0;
 };
@@ -95,6 +100,39 @@ struct LineFans::State {
   std::array<Vec3, kCandidates> candidates{};
   unsigned next_candidate = 0, candidate_count = 0;
 };
+
+// Cauchy's formula: a convex body's mean shadow is a quarter of its surface area, so a random
+// line through the bounds meets about (the balls' cross-sections, pi rho^2) / (area / 4).
+double LineFans::balls_per_line(const std::vector<detail::GeometrySource>& sources,
+                                const Box3& bounds) {
+  double sections = 0.0;
+  for (const detail::GeometrySource& s : sources) {
+    for (uint32_t i = 0; i < s.count; ++i) {
+      const double rho = s.balls[i].radius;
+      sections += kPi * rho * rho;
+    }
+  }
+  const Vec3 e = bounds.extent();
+  const double area = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+  return area > 0.0 ? 4.0 * sections / area : 0.0;
+}
+
+bool LineFans::worth_making(const std::vector<detail::GeometrySource>& sources,
+                            const Box3& bounds) {
+  size_t count = 0;
+  for (const detail::GeometrySource& s : sources) count += s.count;
+  if (count <= kFanBalls) return count > 0;
+  return balls_per_line(sources, bounds) >= kFanCandidates;
+}
+
+size_t LineFans::memory_bytes() const {
+  size_t bytes = entries_.capacity() * sizeof(Entry);
+  for (const auto* v : {&x_, &y_, &z_, &rho_, &blocks_.x, &blocks_.y, &blocks_.z, &blocks_.rho,
+                        &groups_.x, &groups_.y, &groups_.z, &groups_.rho}) {
+    bytes += v->capacity() * sizeof(double);
+  }
+  return bytes;
+}
 
 LineFans::LineFans(const std::vector<detail::GeometrySource>& sources, const Box3& bounds)
     : serial_(++fans_made) {
@@ -191,7 +229,10 @@ void LineFans::lay_out(Cone& cone, const Vec3& apex) const {
   for (uint32_t k : cone.members) {
     order.push_back({glm::length(Vec3(x_[k], y_[k], z_[k]) - apex), k});
   }
-  std::sort(order.begin(), order.end());
+  // The members come in the blocks' spatial order, their distances spread: O(n).
+  bucket_sort(
+      std::span(order), [](const std::pair<double, uint32_t>& e) { return e.first; },
+      std::less<std::pair<double, uint32_t>>());
   // Whole SIMD widths past the last, from wherever a scan starts.
   const size_t n = cone.members.size() + kSimdWidth;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -315,7 +356,8 @@ LineFans::Cone& LineFans::cone_for(Apex& apex, const Vec3& direction) const {
     }
   }
   lay_out(cone, apex.point);
-  if (apex.builds >= kTrialBuilds && apex.tests > kTestsPerLine * apex.lines) apex.off = true;
+  const uint64_t worth = kTestsPerLine * apex.lines + kTestsPerCandidate * apex.kept;
+  if (apex.builds >= kTrialBuilds && apex.tests > worth) apex.off = true;
   return cone;
 }
 
@@ -378,6 +420,7 @@ bool LineFans::candidates(const detail::Line& line,
   ++apex->lines;
   Cone& cone = cone_for(*apex, line.direction);
   const size_t kept = scan(cone, apex->point, line);
+  apex->kept += kept;
   for (size_t k = 0; k < kept; ++k) {
     const Entry& e = entries_[cone.members[cone.kept[k]]];
     out.push_back({e.source, e.primitive});

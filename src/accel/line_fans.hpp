@@ -17,9 +17,13 @@
 // apex builds one around itself, testing groups of balls, then blocks, then balls (the
 // triangles come in spatial order). An apex whose builds test many balls for each line its
 // cones serve (rays far apart beside the balls) is given up on its thread, and its lines walk
-// the hierarchy. Indexes of more than kFanBalls triangles have no fans: on the dragon
-// (202,520 triangles) they cost more than they saved (R = 1: 1.07 times the time, R = 5:
-// the same).
+// the hierarchy. An index of more than kFanBalls triangles has fans only where a line through
+// its bounds meets at least kFanCandidates balls on average (worth_making): there a walk of
+// the hierarchy costs a callback per ball (about 2,300 cycles a query on the dragon at R = 5),
+// and a cone, built once for dozens of lines, far less. On the dragon (202,520 triangles,
+// Table 1's view) fans made R = 5 0.944 of the time, R = 3.5 0.980, but R = 3 1.010 and R = 2
+// 1.050 (a line meets about 194, 115, 92 and 55 balls there): fewer lines per cone, each
+// with fewer candidates to save.
 //
 // The answer is the same set of candidates a walk would pass to the exact spans (every ball
 // such a line meets is in its cone's list), so the intervals are the same; the caller orders
@@ -35,8 +39,17 @@ namespace convray::accel {
 
 class LineFans {
  public:
-  // At most this many triangles in all (see above).
+  // Fans for any index of at most this many triangles, and for larger ones where a line
+  // through the bounds meets at least kFanCandidates balls on average (see above).
   static constexpr size_t kFanBalls = 16384;
+  static constexpr double kFanCandidates = 100.0;
+  // Whether an index over `sources` (all triangles) within `bounds` is given fans.
+  static bool worth_making(const std::vector<detail::GeometrySource>& sources,
+                           const Box3& bounds);
+  // How many of the sources' balls a random line through `bounds` meets on average, by
+  // Cauchy's formula.
+  static double balls_per_line(const std::vector<detail::GeometrySource>& sources,
+                               const Box3& bounds);
 
   // Over the triangle sources of an index (other kinds make no fans: the caller checks), whose
   // balls must outlive this.
@@ -47,6 +60,8 @@ class LineFans {
   // hierarchy instead).
   bool candidates(const detail::Line& line,
                   std::vector<detail::TriangleCandidate>& out) const;
+  // The lists shared by every thread (not the per-thread cones).
+  size_t memory_bytes() const;
 
  private:
   struct Entry {  // a ball and whose it is

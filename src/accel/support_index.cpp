@@ -180,7 +180,7 @@ SupportIndex::SupportIndex(const SupportSources& in) : impl_(std::make_unique<Im
   const bool meshes_only = std::all_of(m.sources.begin(), m.sources.end(), [](const auto& s) {
     return s.kind == GeometrySource::Kind::triangle;
   });
-  if (meshes_only && m.size > 0 && m.size <= LineFans::kFanBalls) {
+  if (meshes_only && LineFans::worth_making(m.sources, m.bounds)) {
     m.fans = std::make_unique<LineFans>(m.sources, m.bounds);
   }
 }
@@ -200,6 +200,7 @@ const std::vector<std::vector<BoundingBall>>& SupportIndex::triangle_balls() con
 size_t SupportIndex::memory_bytes() const {
   size_t bytes = size_t(impl_->embree_bytes) + impl_->sources.capacity() * sizeof(GeometrySource);
   for (const auto& prebuilt : impl_->instances) bytes += prebuilt->memory_bytes();
+  if (impl_->fans) bytes += impl_->fans->memory_bytes();
   for (const auto& balls : impl_->balls) bytes += balls.capacity() * sizeof(BoundingBall);
   for (const auto& frames : impl_->own_frames) {
     bytes += frames.capacity() * sizeof(field::TriangleFrame);

@@ -6,7 +6,7 @@
 
 #include "core/polynomial_roots.hpp"
 #include "implicit/entry_order.hpp"
-#include "implicit/insertion_sort.hpp"
+#include "util/insertion_sort.hpp"
 #include "implicit/quartic.hpp"
 #include "implicit/surface_impl.hpp"
 

@@ -1,12 +1,11 @@
 // The quartic helpers of the sphere sweep (implicit/quartic.hpp) against direct evaluation:
-// a sphere's term, the change of origin and the Bernstein hull; and the sweep's insertion
-// sort against std::sort. (The roots of quartics: tests/core/quartic_roots_test.cpp.)
+// a sphere's term, the change of origin and the Bernstein hull. (The roots of quartics:
+// tests/core/quartic_roots_test.cpp; the sweep's insertion sort: tests/core/sort_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 
-#include "implicit/insertion_sort.hpp"
 #include "implicit/quartic.hpp"
 
 namespace convray::implicit {
@@ -36,19 +35,6 @@ TEST(Quartic, SphereTermShiftAndBernsteinAgreeWithDirectEvaluation) {
     }
     EXPECT_NEAR(b[0], q(0.0), 1e-13 * std::abs(k) * (h2 + 36.0) * (h2 + 36.0));
     EXPECT_NEAR(b[4], q(width), 1e-12 * std::abs(k) * (h2 + 36.0) * (h2 + 36.0));
-  }
-}
-
-TEST(InsertionSort, SortsLikeStdSort) {
-  std::mt19937_64 rng(43);
-  std::uniform_int_distribution<int> u(0, 50);
-  for (int trial = 0; trial < 100; ++trial) {
-    std::vector<int> items(size_t(u(rng)));
-    for (int& x : items) x = u(rng);
-    std::vector<int> expected = items;
-    std::sort(expected.begin(), expected.end());
-    insertion_sort(std::span(items), std::less<int>());
-    EXPECT_EQ(items, expected);
   }
 }
 

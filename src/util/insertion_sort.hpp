@@ -1,11 +1,11 @@
 #pragma once
-// Insertion sort, for the short and nearly sorted lists of a ray: Embree visits supports
-// roughly front to back, so this runs in O(n + inversions), less than std::sort on the few
-// dozen supports of a typical ray.
+// Insertion sort, for the short and nearly sorted lists of a ray (Embree visits supports
+// roughly front to back), and within bucket_sort's buckets: O(n + inversions), less than
+// std::sort on the few dozen supports of a typical ray.
 #include <span>
 #include <utility>
 
-namespace convray::implicit {
+namespace convray {
 
 template <typename T, typename Less>
 void insertion_sort(std::span<T> items, Less less) {
@@ -21,4 +21,4 @@ void insertion_sort(std::span<T> items, Less less) {
   }
 }
 
-}  // namespace convray::implicit
+}  // namespace convray
