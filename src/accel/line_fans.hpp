@@ -21,7 +21,7 @@
 // its bounds meets at least kFanCandidates balls on average (worth_making): there a walk of
 // the hierarchy costs a callback per ball (about 2,300 cycles a query on the dragon at R = 5),
 // and a cone, built once for dozens of lines, far less. On the dragon (202,520 triangles,
-// Table 1's view) fans made R = 5 0.944 of the time, R = 3.5 0.980, but R = 3 1.010 and R = 2
+// Table 1's view) fans made R = 5 0.956 of the time, R = 3.5 0.980, but R = 3 1.010 and R = 2
 // 1.050 (a line meets about 194, 115, 92 and 55 balls there): fewer lines per cone, each
 // with fewer candidates to save.
 //

@@ -6,9 +6,9 @@
 
 #include "core/polynomial_roots.hpp"
 #include "implicit/entry_order.hpp"
-#include "util/insertion_sort.hpp"
 #include "implicit/quartic.hpp"
 #include "implicit/surface_impl.hpp"
+#include "util/insertion_sort.hpp"
 
 namespace convray::implicit {
 namespace {
