@@ -22,16 +22,19 @@ constexpr double kConeWidth = 1.0;
 // or two; the cones of the tile being traced and its neighbours).
 constexpr size_t kCones = 4;
 constexpr size_t kApexes = 2;
-// An apex is given up (its lines walk the hierarchy) once its builds, after kTrialBuilds of
-// them, have tested more than kTestsPerLine balls and blocks per line served, plus
-// kTestsPerCandidate per candidate listed: a test costs a few cycles, a line served saves
-// about a walk of the hierarchy, which costs a thousand cycles or more and a callback (some
-// fifty cycles) per candidate. Where the balls are narrow beside the spacing of the lines (a
-// big mesh at a small radius) cones serve few lines each, and building them would cost more
-// than they save. (Without the candidates' share the light of the dragon at R = 5 was given
-// up after its first builds, whose long shadow rays list about 90 candidates each.)
-constexpr uint64_t kTestsPerLine = 64;
-constexpr uint64_t kTestsPerCandidate = 16;
+// An apex is given up (its lines walk the hierarchy) once, after kTrialBuilds builds, what its
+// cones cost exceeds what their lines save, counted in cone tests (a test of a ball, block or
+// group against a cone, about 5 ns): laying out a member costs about two tests, scanning ten
+// balls for a line one; a line served saves a walk of Embree's hierarchy, about 30 tests plus
+// 4 for each candidate it lists (its callback). Fitted to the dragon's renders, fans against
+// none: at R = 5 (202,520 triangles) 0.94 and on a 47,000-triangle version at R = 10 0.90,
+// where the saving is twice the cost; the 871,000-triangle one at R = 2.5 1.06, where the
+// cost is twice the saving (narrow cones, each serving 19 lines but holding 870 balls). Where
+// the balls are narrow beside the spacing of the lines cones serve few lines each.
+constexpr uint64_t kTestsPerLine = 30;
+constexpr uint64_t kTestsPerCandidate = 4;
+constexpr uint64_t kTestsPerMember = 2;
+constexpr uint64_t kScannedPerTest = 10;
 constexpr uint64_t kTrialBuilds = 8;
 // Balls are grouped in blocks of kBlock consecutive ones (a mesh's triangles come in spatial
 // order: scene/mesh_skeleton.cpp), blocks in groups of kBlock; a cone's build tests the
@@ -77,10 +80,11 @@ struct LineFans::Cone {
 
 struct LineFans::Apex {
   bool valid = false;
-  bool off = false;  // given up (kTestsPerLine)
+  bool off = false;  // given up (kTrialBuilds)
   Vec3 point{0.0};
   double angle = 0.0;  // its cones' half angle
-  uint64_t lines = 0, builds = 0, tests = 0, kept = 0;
+  // Lines served, cones built, tests made, balls laid out, scanned and listed.
+  uint64_t lines = 0, builds = 0, tests = 0, members = 0, scanned = 0, kept = 0;
   std::array<Cone, kCones> cones;
   unsigned next_cone = 0;
 };
@@ -281,8 +285,10 @@ std::pair<size_t, size_t> LineFans::depths(const Cone& cone, const Vec3& apex,
 
 // may_cross (support_shapes.hpp) on every ball of the cone at once, its conditions as
 // selects; the indices of those it keeps, in order, into cone.kept. Returns how many.
-size_t LineFans::scan(Cone& cone, const Vec3& apex, const detail::Line& line) const {
+size_t LineFans::scan(Cone& cone, const Vec3& apex, const detail::Line& line,
+                      size_t& scanned) const {
   const auto [first, end] = depths(cone, apex, line);
+  scanned = end - first;
   const double ox = line.origin.x, oy = line.origin.y, oz = line.origin.z;
   const double dx = line.direction.x, dy = line.direction.y, dz = line.direction.z;
   const double tmin = line.tmin, tmax = line.tmax;
@@ -356,8 +362,11 @@ LineFans::Cone& LineFans::cone_for(Apex& apex, const Vec3& direction) const {
     }
   }
   lay_out(cone, apex.point);
-  const uint64_t worth = kTestsPerLine * apex.lines + kTestsPerCandidate * apex.kept;
-  if (apex.builds >= kTrialBuilds && apex.tests > worth) apex.off = true;
+  apex.members += cone.members.size();
+  const uint64_t cost =
+      apex.tests + kTestsPerMember * apex.members + apex.scanned / kScannedPerTest;
+  const uint64_t saving = kTestsPerLine * apex.lines + kTestsPerCandidate * apex.kept;
+  if (apex.builds >= kTrialBuilds && cost > saving) apex.off = true;
   return cone;
 }
 
@@ -419,7 +428,9 @@ bool LineFans::candidates(const detail::Line& line,
   if (apex->off) return false;
   ++apex->lines;
   Cone& cone = cone_for(*apex, line.direction);
-  const size_t kept = scan(cone, apex->point, line);
+  size_t scanned = 0;
+  const size_t kept = scan(cone, apex->point, line, scanned);
+  apex->scanned += scanned;
   apex->kept += kept;
   for (size_t k = 0; k < kept; ++k) {
     const Entry& e = entries_[cone.members[cone.kept[k]]];

@@ -83,7 +83,8 @@ class LineFans {
   void lay_out(Cone& cone, const Vec3& apex) const;
   std::pair<size_t, size_t> depths(const Cone& cone, const Vec3& apex,
                                    const detail::Line& line) const;
-  size_t scan(Cone& cone, const Vec3& apex, const detail::Line& line) const;
+  // Returns how many balls it keeps; `scanned`: how many it tested.
+  size_t scan(Cone& cone, const Vec3& apex, const detail::Line& line, size_t& scanned) const;
 
   std::vector<Entry> entries_;
   std::vector<double> x_, y_, z_, rho_;  // their balls' centres and grown radii, in lanes
