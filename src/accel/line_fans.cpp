@@ -29,8 +29,8 @@ constexpr size_t kApexes = 2;
 // 4 for each candidate it lists (its callback). Fitted to the dragon's renders, fans against
 // none: at R = 5 (202,520 triangles) 0.94 and on a 47,000-triangle version at R = 10 0.90,
 // where the saving is twice the cost; the 871,000-triangle one at R = 2.5 1.06, where the
-// cost is twice the saving (narrow cones, each serving 19 lines but holding 870 balls). Where
-// the balls are narrow beside the spacing of the lines cones serve few lines each.
+// cost is twice the saving (narrow cones, each serving 19 lines but holding 870 balls): where
+// the balls are narrow beside the spacing of the lines, cones serve few lines each.
 constexpr uint64_t kTestsPerLine = 30;
 constexpr uint64_t kTestsPerCandidate = 4;
 constexpr uint64_t kTestsPerMember = 2;
