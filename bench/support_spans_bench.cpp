@@ -1,7 +1,8 @@
 // Exact spans of triangle supports along a line per second on one core: the scalar twin
 // (accel::triangle_span, one call per triangle, as the Embree callbacks used to do) and the
 // SIMD batch (accel::TriangleSpanBatch). Triangles of mean edge 2 scattered around a ray, at
-// R = 1 and R = 5 (the dragon rows of issue 15), about half of them crossed.
+// R = 1 and R = 5 (the dragon rows of issue 15), about half of them crossed; and the batch
+// with the line's terms beside the spans (what the window march asks for).
 // Run: build/bench/support_spans_bench --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 
@@ -71,8 +72,33 @@ void batch_spans(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(tris.size()));
 }
 
+// The same with the line's terms beside the spans (accel::TriangleLineTable), as the window
+// march asks for them.
+void batch_spans_and_terms(benchmark::State& state) {
+  const double radius = double(state.range(0));
+  const auto tris = make_triangles(radius);
+  std::vector<uint32_t> ids(tris.size());
+  std::iota(ids.begin(), ids.end(), 0u);
+  const auto frames = convray::field::triangle_frames(tris);
+  convray::accel::TriangleSpanBatch batch;
+  convray::accel::TriangleLineTable table;
+  for (auto _ : state) {
+    table.clear();
+    batch.gather(tris, frames, ids);
+    const size_t row = batch.compute(kOrigin, kDirection, radius, table);
+    double sum = 0.0;
+    for (size_t k = 0; k < batch.size(); ++k) {
+      const auto s = batch.span(k);
+      if (!s.empty()) sum += s.exit - s.enter + table.twice_area(row + k);
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(tris.size()));
+}
+
 }  // namespace
 
 BENCHMARK(scalar_spans)->Arg(1)->Arg(5);
 BENCHMARK(batch_spans)->Arg(1)->Arg(5);
+BENCHMARK(batch_spans_and_terms)->Arg(1)->Arg(5);
 BENCHMARK_MAIN();
