@@ -3,8 +3,8 @@
 // bounds, the exact spans of its support) needs beyond its corners: its unit normal, the
 // lengths of its edges, and its area: the square roots of the frame. Computed once per mesh
 // (ConvolutionSurface keeps one per triangle, 56 bytes) instead of once per ray and triangle
-// (docs/benchmarks.md, issue 15's fifth step). The edges' unit directions, edge / length, are
-// left to the batch's set_lane (three divisions an edge there, the same bits): kept here they
+// (docs/benchmarks.md, issue 15's fifth step). The edges' unit directions, edge times
+// 1 / length, are left to the batch's set_lane (a division an edge there): kept here they
 // were 72 bytes a triangle, 14.6 MB of the dragon's 200,000 first touched at every start
 // (issue 15's twentieth step).
 #include <array>
