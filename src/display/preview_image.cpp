@@ -1,7 +1,6 @@
 #include "display/preview_image.hpp"
 
-#include "core/image_file.hpp"
-#include "core/png_writer.hpp"
+#include "core/srgb_levels.hpp"
 
 namespace convray::display {
 
@@ -24,7 +23,7 @@ void PreviewImage::put(const render::PixelWindow& area, std::span<const float> r
       const int i = shown_.x0 + source_of(u, size_.width, source_w);
       const size_t from = 3 * (size_t(j - area.y0) * area_w + size_t(i - area.x0));
       const size_t to = 3 * (size_t(v) * size_t(size_.width) + size_t(u));
-      for (int c = 0; c < 3; ++c) levels_[to + c] = quantize_8bit(encode_srgb(rgb[from + c]));
+      for (int c = 0; c < 3; ++c) levels_[to + c] = srgb_level(rgb[from + c]);
     }
   }
   changed_ = true;

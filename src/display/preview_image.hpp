@@ -1,7 +1,7 @@
 #pragma once
 // The preview window's picture: 8-bit sRGB levels, one byte per channel, the window's size.
 // Tiles arrive from the render's threads in linear light and are encoded exactly as the PNG
-// writer encodes the file (encode_srgb, quantize_8bit), so an unscaled window shows the
+// writer encodes the file (core/srgb_levels.hpp), so an unscaled window shows the
 // file's bytes. No SDL here: the window (sdl_window.hpp) copies it out under the lock.
 #include <cstdint>
 #include <mutex>
