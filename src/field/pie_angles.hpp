@@ -13,6 +13,7 @@
 //
 // `atan2` is the caller's (a SIMD variant in the batch's vectorized loop); only selects on
 // comparisons of doubles, which GCC's vectorizer takes where it leaves a bool's loop scalar.
+#include <algorithm>
 #include <cmath>
 
 #include "util/math.hpp"
@@ -32,6 +33,35 @@ template <class Atan2>
   const double short_turn = side < 0.0 ? 2.0 * kPi : 0.0;
   const double over_turn = side > 0.0 ? -2.0 * kPi : 0.0;
   return angle + (signs > 0.0 ? short_turn : signs < 0.0 ? over_turn : 0.0);
+}
+
+// All three of a triangle's pie angles summed with one atan2, where their sum is known to lie
+// in [0, 2 pi]: the arc of the kernel's circle inside the triangle (the edges' parts outside
+// the disk subtend, seen from its centre, what the triangle's boundary does less what its parts
+// inside the disk do, and the region they bound with the arcs holds the centre exactly when the
+// triangle does). The product of the three pies has the sum's angle up to whole turns: a turn
+// is added where that angle is negative. Only where it lies within kTurnDoubt of 0 may the sum
+// be either 0 or a whole turn (rounding decides), and where the product leaves the doubles'
+// comfortable range its angle is unsure: `doubtful` is 1 then, else 0, for the caller to sum
+// that lane's angles the two-call way. Zero pies as in two_pie_angles.
+inline constexpr double kTurnDoubt = 1e-9;
+
+template <class Atan2>
+[[gnu::always_inline]] inline double three_pie_angles(double y0, double x0, double y1, double x1,
+                                                      double y2, double x2, double scale,
+                                                      Atan2 atan2, double& doubtful) {
+  x0 = x0 == 0.0 ? (y0 == 0.0 ? std::copysign(1.0, x0) : x0) : x0 * scale;
+  x1 = x1 == 0.0 ? (y1 == 0.0 ? std::copysign(1.0, x1) : x1) : x1 * scale;
+  x2 = x2 == 0.0 ? (y2 == 0.0 ? std::copysign(1.0, x2) : x2) : x2 * scale;
+  y0 *= scale;
+  y1 *= scale;
+  y2 *= scale;
+  const double x01 = x0 * x1 - y0 * y1, y01 = x0 * y1 + y0 * x1;
+  const double x = x01 * x2 - y01 * y2, y = x01 * y2 + y01 * x2;
+  const double angle = atan2(y, x);
+  const double size = std::max(std::abs(x), std::abs(y));
+  doubtful = std::abs(angle) < kTurnDoubt || !(size > 1e-250) || !(size < 1e250) ? 1.0 : 0.0;
+  return angle < 0.0 ? angle + 2.0 * kPi : angle;
 }
 
 }  // namespace convray::field

@@ -234,6 +234,37 @@ TEST(TriangleBatch, AssignedFromFramesEqualsAssignedFromCorners) {
   EXPECT_EQ(line.length[2], 1.0);
 }
 
+TEST(TriangleBatch, DisksAHairFromAllOrNoneInsideMatchTheScalarTwin) {
+  // The batch sums a lane's three pie angles with one atan2 (pie_angles.hpp), which tells a
+  // whole turn from none only by the product's sign: disks crossing an edge by a hair from
+  // inside (the arc inside the triangle nearly the whole turn) and from outside (nearly none),
+  // and reaching past a corner by a hair (an arc of about the hair), at every distance from
+  // 10^-3 to 10^-15 of R, against the scalar twin. (Where the sign is in doubt the lane is
+  // summed the two-call way: pie_angles_test.cpp checks which sums are flagged.)
+  const Triangle t{{-10.0, -10.0, 0.0}, {10.0, -10.0, 0.0}, {0.0, 10.0, 0.0}};
+  const TriangleBatch batch(std::vector<Triangle>{t});
+  const double R = 1.0, h = 0.6, r0 = std::sqrt(R * R - h * h);
+  int points = 0;
+  for (double e = 1e-3; e >= 1e-15; e *= 0.1) {
+    for (const double sign : {-1.0, 1.0}) {
+      const Vec3 ps[] = {
+          {0.0, -10.0 + r0 + sign * e, h},   // inside, reaching the bottom edge
+          {0.0, -10.0 - r0 + sign * e, h},   // outside, reaching it from below
+          {10.0 + r0 + sign * e, -10.0, h},  // the corner (10, -10) on the circle
+      };
+      for (const Vec3& p : ps) {
+        const FieldSample exact = triangle_field(p, t, R);
+        EXPECT_NEAR(batch.value(p, R), exact.value, 1e-13) << p.x << " " << p.y;
+        const FieldSample got = batch.field(p, R);
+        EXPECT_NEAR(got.value, exact.value, 1e-13) << p.x << " " << p.y;
+        for (int a = 0; a < 3; ++a) EXPECT_NEAR(got.gradient[a], exact.gradient[a], 1e-12);
+        ++points;
+      }
+    }
+  }
+  EXPECT_EQ(points, 78);
+}
+
 TEST(TriangleBatch, EmptyBatchIsZero) {
   const TriangleBatch batch;
   EXPECT_EQ(batch.value(Vec3(0.0), 1.0), 0.0);
