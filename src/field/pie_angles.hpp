@@ -9,7 +9,8 @@
 // whole turn in the first two cases, both x have one sign and the product's y is a sum of two
 // products of one sign. A pie (±0, ±0), whose angle is that of (±0, ±1), is made that, so
 // that its signs still count; `scale` (> 0, no angle changes) keeps the product in range.
-// Three pies in one product would leave the turn unknown: their sum spans 3 pi.
+// Three pies in one product leave the turn unknown in general (their sum spans 3 pi); a
+// triangle's three, whose sum is known to lie within a turn, are three_pie_angles' below.
 //
 // `atan2` is the caller's (a SIMD variant in the batch's vectorized loop); only selects on
 // comparisons of doubles, which GCC's vectorizer takes where it leaves a bool's loop scalar.
