@@ -17,7 +17,7 @@ constexpr uint32_t kBuckets = kOneBits >> kBucketShift;
 struct Bucket {
   float step;         // the first float of the bucket at level + 1 (+inf: none)
   uint8_t level;      // the level of the bucket's first float
-  bool direct;        // the level rises by more than one within the bucket
+  bool direct;        // the level rises by more than one within the bucket (or falls)
 };
 
 float float_of(uint32_t bits) { return std::bit_cast<float>(bits); }
@@ -28,7 +28,7 @@ std::vector<Bucket> make_table() {
     const uint32_t first = b << kBucketShift, last = first + (1u << kBucketShift) - 1;
     const uint8_t low = srgb_level_direct(float_of(first)), high = srgb_level_direct(float_of(last));
     Bucket& bucket = table[b];
-    bucket = {std::numeric_limits<float>::infinity(), low, high > low + 1};
+    bucket = {std::numeric_limits<float>::infinity(), low, high != low && high != low + 1};
     if (high != low + 1) continue;
     // The first float at level + 1: bisection over the bucket's floats (ordered as integers).
     uint32_t below = first, above = last;

@@ -6,8 +6,8 @@
 // level is a step function of v with 255 steps. The floats in [0, 1) are cut into buckets by
 // their top bits (a bucket is 2^17 consecutive floats); each bucket holds its first float's
 // level and the first float of the bucket, if any, where the level goes up by one. A bucket
-// where it goes up by more (none with these widths, checked when the table is made) is
-// computed as before. tests/core/srgb_levels_test.cpp compares every float around every
+// where it goes up by more (none: a bucket spans at most 0.9 of a level) or down is computed
+// directly. tests/core/srgb_levels_test.cpp compares every float around every
 // step, and a stride through all the others, with the direct computation.
 #include <cstdint>
 
