@@ -392,7 +392,8 @@ void TriangleBatch::phase_two(const ChunkState& st, size_t base, size_t lanes, b
       theta[t] = three_pie_angles(st.pie_y[0][t], st.pie_x[0][t], st.pie_y[1][t],
                                   st.pie_x[1][t], st.pie_y[2][t], st.pie_x[2][t], scale,
                                   simd_atan2, doubt[t]);
-      // Only the lanes that count and touch the disk use the angle (the others' is 0).
+      // Only the lanes that count and touch the disk use the angle (the others take `whole`
+      // below, or count nothing).
       doubt[t] = st.touches[t] && st.scale[t] != 0.0 ? doubt[t] : 0.0;
       any_doubt |= int64_t(doubt[t] != 0.0);
     }
