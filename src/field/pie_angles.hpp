@@ -21,13 +21,18 @@
 
 namespace convray::field {
 
+// A pie made ready for a product: scaled, and a zero pie (±0, ±0) made (±1, ±0), the pie
+// whose angle atan2 gives it.
+[[gnu::always_inline]] inline void scale_pie(double& y, double& x, double scale) {
+  x = x == 0.0 ? (y == 0.0 ? std::copysign(1.0, x) : x) : x * scale;
+  y *= scale;
+}
+
 template <class Atan2>
 [[gnu::always_inline]] inline double two_pie_angles(double y0, double x0, double y1, double x1,
                                                     double scale, Atan2 atan2) {
-  x0 = x0 == 0.0 ? (y0 == 0.0 ? std::copysign(1.0, x0) : x0) : x0 * scale;
-  x1 = x1 == 0.0 ? (y1 == 0.0 ? std::copysign(1.0, x1) : x1) : x1 * scale;
-  y0 *= scale;
-  y1 *= scale;
+  scale_pie(y0, x0, scale);
+  scale_pie(y1, x1, scale);
   const double angle = atan2(x0 * y1 + y0 * x1, x0 * x1 - y0 * y1);
   const double signs = std::copysign(1.0, y0) + std::copysign(1.0, y1);  // 2, 0 or -2
   const double side = std::copysign(1.0, angle);
@@ -51,12 +56,9 @@ template <class Atan2>
 [[gnu::always_inline]] inline double three_pie_angles(double y0, double x0, double y1, double x1,
                                                       double y2, double x2, double scale,
                                                       Atan2 atan2, double& doubtful) {
-  x0 = x0 == 0.0 ? (y0 == 0.0 ? std::copysign(1.0, x0) : x0) : x0 * scale;
-  x1 = x1 == 0.0 ? (y1 == 0.0 ? std::copysign(1.0, x1) : x1) : x1 * scale;
-  x2 = x2 == 0.0 ? (y2 == 0.0 ? std::copysign(1.0, x2) : x2) : x2 * scale;
-  y0 *= scale;
-  y1 *= scale;
-  y2 *= scale;
+  scale_pie(y0, x0, scale);
+  scale_pie(y1, x1, scale);
+  scale_pie(y2, x2, scale);
   const double x01 = x0 * x1 - y0 * y1, y01 = x0 * y1 + y0 * x1;
   const double x = x01 * x2 - y01 * y2, y = x01 * y2 + y01 * x2;
   const double angle = atan2(y, x);
