@@ -14,6 +14,11 @@
 
 namespace convray::accel::detail {
 
+uint64_t GeometrySource::next_serial() {
+  static std::atomic<uint64_t> made{0};
+  return ++made;
+}
+
 Box3 GeometrySource::support_box(uint32_t i) const {
   const double r = radius(i);
   switch (kind) {
@@ -180,10 +185,19 @@ void group_by_source(std::vector<TriangleCandidate>& candidates, BySource by_sou
 
 // The exact spans of the triangle candidates, a run of one source at a time through the SIMD
 // batch (the same answers as GeometrySource::span, which tests compare it with).
+// Neighbouring lines (a tile's camera rays, the shadow rays of their hits) often have the very
+// same candidates: the last two gathers are kept, and a run of candidates that matches one is
+// computed on it without gathering again (the soup: half of the runs).
 void span_candidates(const Line& line, std::vector<TriangleCandidate>& candidates,
                      std::vector<SupportInterval>& out, TriangleLineTable* terms) {
+  struct Gathered {
+    TriangleSpanBatch batch;
+    uint64_t serial = 0;  // the source's (0: none yet)
+    std::vector<uint32_t> ids;
+  };
+  thread_local Gathered kept[2];
+  thread_local unsigned older = 0;  // the one to gather into next
   thread_local std::vector<uint32_t> ids;
-  thread_local TriangleSpanBatch batch;
   const auto by_source = [](const TriangleCandidate& a, const TriangleCandidate& b) {
     return std::less<const GeometrySource*>()(a.source, b.source);
   };
@@ -199,7 +213,16 @@ void span_candidates(const Line& line, std::vector<TriangleCandidate>& candidate
     while (end < candidates.size() && candidates[end].source == &source) {
       ids.push_back(candidates[end++].primitive);
     }
-    batch.gather({source.triangles, source.count}, {source.frames, source.count}, ids);
+    const auto holds = [&](const Gathered& g) { return g.serial == source.serial && g.ids == ids; };
+    const int held = holds(kept[0]) ? 0 : holds(kept[1]) ? 1 : -1;
+    const unsigned slot = held >= 0 ? unsigned(held) : older;
+    TriangleSpanBatch& batch = kept[slot].batch;
+    if (held < 0) {
+      batch.gather({source.triangles, source.count}, {source.frames, source.count}, ids);
+      kept[slot].serial = source.serial;
+      kept[slot].ids = ids;
+    }
+    older = slot ^ 1u;
     uint32_t row = SupportInterval::kNoTerms;
     if (terms) {
       row = uint32_t(batch.compute(line.origin, line.direction, source.shared_radius, *terms));

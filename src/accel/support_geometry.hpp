@@ -34,6 +34,11 @@ struct GeometrySource {
   const double* radii = nullptr;  // per primitive, or null with `shared_radius`
   double shared_radius = 0.0;
   double margin = 0.0;  // absolute slack on the float boxes (see support_margin)
+  // Distinct for every source made in this process (and kept by its copies): thread-local
+  // caches key on it, as a freed source's address may be reused.
+  uint64_t serial = next_serial();
+
+  static uint64_t next_serial();
 
   double radius(uint32_t i) const { return radii ? radii[i] : shared_radius; }
   Box3 support_box(uint32_t i) const;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <random>
 #include <set>
 #include <utility>
@@ -185,6 +186,39 @@ TEST(LineFans, IndexAnswersThroughFansAreTheExactSpans) {
       expect_exact_spans(index, coherent_lines(rng, Vec3(0.5, 2.0, -8.0), Vec3(6.0, 8.0, -3.0)),
                          soup.a, 0.3, soup.b, 0.1);
   EXPECT_GT(found_total, 2000u);
+}
+
+// The exact spans keep each thread's last two gathers of triangles and reuse one where a
+// line's candidates are the same. Lines asked of two indices in turn (the same ids, other
+// corners), each line twice, and one index made again (likely where the freed one stood):
+// each answer is its own index's brute force.
+TEST(LineFans, KeptGathersNeverServeAnotherIndex) {
+  std::mt19937_64 rng(51);
+  const Soup first = random_soup(rng, 300);
+  Soup second = first;
+  for (auto* mesh : {&second.a, &second.b}) {
+    for (field::Triangle& t : *mesh) t = {t.a * 0.9, t.b * 0.9, t.c * 0.9};
+  }
+  const auto index_of = [](const Soup& soup) {
+    SupportSources sources;
+    sources.triangle_groups = {{soup.a, 0.3}, {soup.b, 0.1}};
+    return std::make_unique<SupportIndex>(sources);
+  };
+  std::unique_ptr<SupportIndex> a = index_of(first);
+  const std::unique_ptr<SupportIndex> b = index_of(second);
+  size_t found = 0;
+  for (int round = 0; round < 2; ++round) {
+    const std::vector<TestLine> lines =
+        coherent_lines(rng, Vec3(0.5, 2.0, -8.0), Vec3(6.0, 8.0, -3.0), 12);
+    for (const TestLine& line : lines) {
+      const std::vector<TestLine> one{line, line};
+      found += expect_exact_spans(*a, one, first.a, 0.3, first.b, 0.1);
+      found += expect_exact_spans(*b, one, second.a, 0.3, second.b, 0.1);
+    }
+    a.reset();
+    a = index_of(first);
+  }
+  EXPECT_GT(found, 1000u);
 }
 
 // More triangles than kFanBalls: fans only where a line meets many balls (here wide ones,
