@@ -60,8 +60,10 @@ class ClusterField {
  public:
   // `origin_t`: where the march starts, the quartics' s = 0 (kept near the samples, so that
   // their powers of s do not cancel).
+  // `search`: which of the thread's two sets of batches to use (see batch_sets_).
   ClusterField(const Impl& s, const Ray& ray, std::span<const accel::SupportInterval> cluster,
-               const accel::TriangleLineTable& lines, double origin_t, TraceStats& stats);
+               const accel::TriangleLineTable& lines, double origin_t, RootMode search,
+               TraceStats& stats);
 
   double value_minus_threshold(double t);  // F / T - 1
   field::FieldSample sample(double t);     // F and its gradient
@@ -84,15 +86,21 @@ class ClusterField {
     double enter, exit;
     LineCurvature curvature;
   };
+  // Its arrays are sized for the cluster once (and only grow, kept from ray to ray), and
+  // filled up to `size`: a push_back per array and member was a third of add_member.
   struct Batch {
     const Impl::Group* group = nullptr;
+    size_t size = 0;                                // the lanes listed so far
     std::vector<uint32_t> triangles;                // indices into the surface's triangles
     std::vector<double> enter, exit;                // the support along the ray
     std::vector<double> inside_enter, inside_exit;  // the whole triangle inside the ball
     std::vector<field::LineQuartic> quartics;       // in s = t - origin_t_, made when
     std::vector<uint8_t> has_quartic;               // first summed (many never are)
     field::TriangleBatch batch;
-    std::vector<uint8_t> lane_set;  // batch lanes are set when first listed
+    // Which triangle each batch lane holds (kNotLoaded: none), of which surface: the lanes
+    // are set when first listed, and kept from ray to ray (see batch_sets_).
+    std::vector<uint32_t> loaded;
+    uint64_t loaded_serial = 0;
     // The lanes at the sample, listed by evaluate: those clipped by the support sphere, and
     // those wholly inside it. Room for every member of the cluster (sized with the batch).
     std::vector<uint32_t> clipped_room, inside_room;
@@ -111,8 +119,8 @@ class ClusterField {
   // The clipped lanes' values (`lanes`, ascending, not empty), summed.
   static double clipped_value(Batch& b, std::span<const uint32_t> lanes, const Vec3& p,
                               double radius);
-  // Sets the batch's lane (on its first sample) and the triangle's quartic (on its first
-  // sample wholly inside), each made once per ray.
+  // Sets the batch's lane (on its first sample, unless an earlier ray left the same triangle
+  // there) and the triangle's quartic (on its first sample wholly inside, once per ray).
   void set_lane(Batch& b, uint32_t lane);
   const field::LineQuartic& quartic(Batch& b, uint32_t lane);
 
@@ -136,19 +144,26 @@ class ClusterField {
   static thread_local DownBendTable down_;
   bool by_table_ = true;
   static thread_local std::vector<Member> others_;    // those outside the batches
-  static thread_local std::vector<Batch> batches_;
+  // Two sets, one for first-hit searches and one for the rest (shadow rays), as each kind
+  // comes one after the other: neighbouring camera rays list mostly the same triangles in the
+  // same lanes, whose set_lane is then skipped (the soup: half of them), where one set would
+  // be overwritten by the shadow ray of the hit in between.
+  static thread_local std::vector<Batch> batch_sets_[2];
+  std::vector<Batch>& batches_;
+  static constexpr uint32_t kNotLoaded = std::numeric_limits<uint32_t>::max();
 };
 
 thread_local std::vector<ClusterField::Bending> ClusterField::members_;
 thread_local DownBendTable ClusterField::down_;
 thread_local std::vector<ClusterField::Member> ClusterField::others_;
-thread_local std::vector<ClusterField::Batch> ClusterField::batches_;
+thread_local std::vector<ClusterField::Batch> ClusterField::batch_sets_[2];
 
 ClusterField::ClusterField(const Impl& s, const Ray& ray,
                            std::span<const accel::SupportInterval> cluster,
                            const accel::TriangleLineTable& lines, double origin_t,
-                           TraceStats& stats)
-    : s_(s), ray_(ray), stats_(stats), cluster_(cluster), lines_(lines), origin_t_(origin_t) {
+                           RootMode search, TraceStats& stats)
+    : s_(s), ray_(ray), stats_(stats), cluster_(cluster), lines_(lines), origin_t_(origin_t),
+      batches_(batch_sets_[search == RootMode::first ? 0 : 1]) {
   others_.clear();
   down_.reset(cluster.size());
   for (const accel::SupportInterval& iv : cluster) reach_ = std::max(reach_, iv.exit);
@@ -206,17 +221,22 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   }
   if (batches_.size() == batches_used_) batches_.emplace_back();
   Batch& b = batches_[batches_used_++];
+  if (b.group != &group || b.loaded_serial != s_.serial) {
+    std::fill(b.loaded.begin(), b.loaded.end(), kNotLoaded);
+    b.loaded_serial = s_.serial;
+  }
   b.group = &group;
-  b.triangles.clear();
-  b.enter.clear();
-  b.exit.clear();
-  b.inside_enter.clear();
-  b.inside_exit.clear();
-  b.quartics.clear();
-  b.has_quartic.clear();
-  b.lane_set.clear();
+  b.size = 0;
+  const size_t n = cluster_.size();
+  if (b.triangles.size() < n) {
+    for (auto* v : {&b.enter, &b.exit, &b.inside_enter, &b.inside_exit}) v->resize(n);
+    b.triangles.resize(n);
+    b.quartics.resize(n);
+    b.has_quartic.resize(n);
+  }
   // Lanes for as many members as the cluster has (most clusters meet one mesh): sized once.
   b.batch.resize_unset(cluster_.size());
+  if (b.loaded.size() < cluster_.size()) b.loaded.resize(cluster_.size(), kNotLoaded);
   const size_t mask_size = cluster_.size() + kSimdWidth;  // value_of_range reads whole widths
   if (b.listed.size() < mask_size) b.listed.resize(mask_size);
   if (b.clipped_room.size() < cluster_.size()) {
@@ -228,17 +248,16 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
 
 void ClusterField::add_triangle(Batch& b, uint32_t index, double enter, double exit,
                                 const accel::Span& corners_within) {
-  b.triangles.push_back(index);
-  b.enter.push_back(enter);
-  b.exit.push_back(exit);
+  const size_t lane = b.size++;
+  b.triangles[lane] = index;
+  b.enter[lane] = enter;
+  b.exit[lane] = exit;
   // Where all three corners are within R of p(t), shrunk by a hair, so rounding never takes a
   // corner just outside for inside.
   const double margin = 1e-9 * b.group->radius;
-  b.inside_enter.push_back(corners_within.enter + margin);
-  b.inside_exit.push_back(corners_within.exit - margin);
-  b.quartics.emplace_back();
-  b.has_quartic.push_back(0);
-  b.lane_set.push_back(0);
+  b.inside_enter[lane] = corners_within.enter + margin;
+  b.inside_exit[lane] = corners_within.exit - margin;
+  b.has_quartic[lane] = 0;
 }
 
 // Where the listed lanes lie close together (at most twice the SIMD widths from the first to
@@ -259,10 +278,10 @@ double ClusterField::clipped_value(Batch& b, std::span<const uint32_t> lanes, co
 }
 
 void ClusterField::set_lane(Batch& b, uint32_t lane) {
-  if (b.lane_set[lane]) return;
   const uint32_t triangle = b.triangles[lane];
+  if (b.loaded[lane] == triangle) return;
   b.batch.set_lane(lane, s_.triangles[triangle], s_.frames[triangle]);
-  b.lane_set[lane] = 1;
+  b.loaded[lane] = triangle;
 }
 
 const field::LineQuartic& ClusterField::quartic(Batch& b, uint32_t lane) {
@@ -289,7 +308,7 @@ field::FieldSample ClusterField::evaluate(double t) {
     uint32_t* clipped = b.clipped_room.data();
     uint32_t* inside = b.inside_room.data();
     size_t clipped_count = 0, inside_count = 0;
-    for (uint32_t lane = 0; lane < b.enter.size(); ++lane) {
+    for (uint32_t lane = 0; lane < b.size; ++lane) {
       const bool in_support = (b.enter[lane] <= t) & (t <= b.exit[lane]);
       const bool wholly_inside = (b.inside_enter[lane] <= t) & (t <= b.inside_exit[lane]);
       clipped[clipped_count] = lane;
@@ -334,7 +353,7 @@ double ClusterField::bend_bound_at(double t) {
   double sum = 0.0;
   for (size_t k = 0; k < batches_used_; ++k) {
     const Batch& b = batches_[k];
-    for (size_t lane = 0; lane < b.enter.size(); ++lane) {
+    for (size_t lane = 0; lane < b.size; ++lane) {
       if (b.enter[lane] <= t && t <= b.exit[lane]) {
         sum += s_.bend_bound(s_.triangle_base + b.triangles[lane]);
       }
@@ -707,7 +726,7 @@ void march_cluster(const Impl& surface, const Ray& ray,
                    std::optional<Vec3>* first_gradient, InsideBall* inside, NearHit* near_hit,
                    const NearHit* start) {
   const double from = std::max(tmin, cluster.front().enter);
-  ClusterField field(surface, ray, cluster, lines, from, stats);
+  ClusterField field(surface, ray, cluster, lines, from, mode, stats);
   const double to = std::min(tmax, field.reach());
   if (!(from < to)) return;
   Marcher marcher(surface, field, mode, first_gradient != nullptr, out, stats,
