@@ -328,7 +328,8 @@ std::optional<SurfaceHit> ConvolutionSurface::first_hit(const Ray& ray, double t
   found.clear();
   std::optional<Vec3> gradient;
   NearHit near;
-  find_roots(*impl_, ray, tmin, tmax, RootMode::first, found, stats, &gradient, nullptr, &near);
+  find_roots(*impl_, ray, tmin, tmax, RootMode::first, found, stats, &gradient, nullptr, &near,
+             NearHits::find(*impl_));
   if (found.empty()) return std::nullopt;
   if (near.bend >= 0.0) NearHits::remember(*impl_, near);
   if (!gradient) return make_surface_hit(*this, ray, found.front());

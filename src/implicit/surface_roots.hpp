@@ -33,7 +33,9 @@ struct InsideBall {
 // certify one cheaply (radius 0 otherwise). With RootMode first and `near_hit`, the window
 // march's exact sample beside the root goes there (near_hit.hpp; its bend stays < 0 where
 // the root came another way); with RootMode any and `start`, a shadow ray that leaves the
-// surface near that sample starts from the bound it gives instead of a sample.
+// surface near that sample starts from the bound it gives instead of a sample, and with
+// RootMode first, a ray that passes near it (the next pixel's) refines its root from the
+// sample's tangent plane (window_march.cpp, kTangentReach).
 void find_roots(const ConvolutionSurface::Impl& surface, const Ray& ray, double tmin, double tmax,
                 RootMode mode, std::vector<double>& out, TraceStats& stats,
                 std::optional<Vec3>* first_gradient = nullptr, InsideBall* inside = nullptr,
