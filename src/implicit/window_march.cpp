@@ -112,6 +112,9 @@ class ClusterField {
     // The lanes at the sample, listed by evaluate: those clipped by the support sphere, and
     // those wholly inside it. Room for every member of the cluster (sized with the batch).
     std::vector<uint32_t> clipped_room, inside_room;
+    // make_quartics' room: the lanes without a quartic, their triangles and new quartics.
+    std::vector<uint32_t> new_lanes, new_triangles;
+    std::vector<field::LineQuartic> new_quartics;
     std::vector<double> listed;  // 1 for the clipped lanes, else 0 (value_of_range)
   };
   template <Want kWant>
@@ -128,9 +131,10 @@ class ClusterField {
   static double clipped_value(Batch& b, std::span<const uint32_t> lanes, const Vec3& p,
                               double radius);
   // Sets the batch's lane (on its first sample, unless an earlier ray left the same triangle
-  // there) and the triangle's quartic (on its first sample wholly inside, once per ray).
+  // there); makes the quartics of the `lanes` that have none yet (on their first sample wholly
+  // inside, once per ray), together.
   void set_lane(Batch& b, uint32_t lane);
-  const field::LineQuartic& quartic(Batch& b, uint32_t lane);
+  void make_quartics(Batch& b, std::span<const uint32_t> lanes);
 
   void make_members() const;
 
@@ -250,6 +254,9 @@ ClusterField::Batch& ClusterField::batch_for(const Impl::Group& group) {
   if (b.clipped_room.size() < cluster_.size()) {
     b.clipped_room.resize(cluster_.size());
     b.inside_room.resize(cluster_.size());
+    b.new_lanes.resize(cluster_.size());
+    b.new_triangles.resize(cluster_.size());
+    b.new_quartics.resize(cluster_.size());
   }
   return b;
 }
@@ -292,15 +299,21 @@ void ClusterField::set_lane(Batch& b, uint32_t lane) {
   b.loaded[lane] = triangle;
 }
 
-const field::LineQuartic& ClusterField::quartic(Batch& b, uint32_t lane) {
-  if (!b.has_quartic[lane]) {
-    const uint32_t triangle = b.triangles[lane];
-    b.quartics[lane] =
-        field::triangle_line_quartic(s_.triangles[triangle], s_.frames[triangle].area,
-                                     ray_.at(origin_t_), ray_.direction, b.group->radius);
-    b.has_quartic[lane] = 1;
+void ClusterField::make_quartics(Batch& b, std::span<const uint32_t> lanes) {
+  size_t count = 0;
+  for (uint32_t lane : lanes) {
+    b.new_lanes[count] = lane;
+    b.new_triangles[count] = b.triangles[lane];
+    count += !b.has_quartic[lane];
   }
-  return b.quartics[lane];
+  if (count == 0) return;
+  const std::span<field::LineQuartic> made(b.new_quartics.data(), count);
+  field::triangle_line_quartics(s_.triangles, s_.frames, {b.new_triangles.data(), count},
+                                ray_.at(origin_t_), ray_.direction, b.group->radius, made);
+  for (size_t k = 0; k < count; ++k) {
+    b.quartics[b.new_lanes[k]] = made[k];
+    b.has_quartic[b.new_lanes[k]] = 1;
+  }
 }
 
 template <Want kWant>
@@ -331,8 +344,9 @@ field::FieldSample ClusterField::evaluate(double t) {
     stats_.field_evaluations += clipped_count + inside_count;
     if constexpr (kWant == Want::value) {
       // Wholly inside: the triangle's exact quartic in s, summed in the lanes' order.
+      make_quartics(b, inside_lanes);
       field::LineQuartic quartics;
-      for (uint32_t lane : inside_lanes) quartics.add(quartic(b, lane), 1.0);
+      for (uint32_t lane : inside_lanes) quartics.add(b.quartics[lane], 1.0);
       sum.value += strength * quartics.value(t - origin_t_);
       if (clipped_count > 0) sum.value += strength * clipped_value(b, clipped_lanes, p, radius);
     } else {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <random>
+#include <vector>
 
 namespace convray::field {
 namespace {
@@ -47,6 +48,36 @@ TEST(TriangleQuartic, EqualsTheClosedFormWhereTheTriangleIsInsideTheBall) {
     }
   }
   EXPECT_GT(checked, 2000);
+}
+
+// The batch (SIMD lanes, listed triangles in any order, repeats, counts that are not whole
+// widths or chunks) against the scalar function, to the bit.
+TEST(TriangleQuartic, BatchEqualsTheScalarFunctionToTheBit) {
+  std::mt19937_64 rng(82);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::normal_distribution<double> n;
+  std::vector<Triangle> triangles;
+  std::vector<TriangleFrame> frames;
+  for (int i = 0; i < 90; ++i) {
+    const Vec3 p(u(rng), u(rng), u(rng));
+    triangles.push_back({p, p + 0.3 * Vec3(u(rng), u(rng), u(rng)),
+                         p + 0.3 * Vec3(u(rng), u(rng), u(rng))});
+    frames.push_back(triangle_frame(triangles.back()));
+  }
+  for (size_t count : {size_t(1), size_t(3), size_t(4), size_t(33), size_t(70)}) {
+    std::vector<uint32_t> ids;
+    for (size_t k = 0; k < count; ++k) ids.push_back(uint32_t(rng() % triangles.size()));
+    const Vec3 direction = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+    const Vec3 origin(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng));
+    const double radius = 0.5 + std::abs(u(rng));
+    std::vector<LineQuartic> batch(count);
+    triangle_line_quartics(triangles, frames, ids, origin, direction, radius, batch);
+    for (size_t k = 0; k < count; ++k) {
+      const LineQuartic one = triangle_line_quartic(triangles[ids[k]], frames[ids[k]].area,
+                                                    origin, direction, radius);
+      for (int j = 0; j < 5; ++j) EXPECT_EQ(batch[k].c[j], one.c[j]) << count << " " << k;
+    }
+  }
 }
 
 }  // namespace
