@@ -18,12 +18,13 @@ struct P {
   double x, y, z;
 };
 
-// One triangle's quartic (corners a, b, c; its area) along origin o + s direction d: the
-// weighted sum over the rule's six points, then times the area. The scalar and the batched
-// function both run this, operation for operation (no contraction in this file): the same bits.
 struct Coefficients {
   double c0, c1, c2, c3, c4;
 };
+
+// One triangle's quartic (corners a, b, c; its area) along origin o + s direction d: the
+// weighted sum over the rule's six points, then times the area. The scalar and the batched
+// function both run this, operation for operation (no contraction in this file): the same bits.
 [[gnu::always_inline]] inline Coefficients line_quartic(P a, P b, P c, double area, P o, P d,
                                                         double inv_r2) {
   double c0 = 0.0, c1 = 0.0, c2 = 0.0, c3 = 0.0, c4 = 0.0;

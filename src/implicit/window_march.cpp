@@ -158,8 +158,9 @@ class ClusterField {
   static thread_local std::vector<Member> others_;    // those outside the batches
   // Two sets, one for first-hit searches and one for the rest (shadow rays), as each kind
   // comes one after the other: neighbouring camera rays list mostly the same triangles in the
-  // same lanes, whose set_lane is then skipped (the soup: half of them), where one set would
-  // be overwritten by the shadow ray of the hit in between.
+  // same lanes, whose set_lane is then skipped (the soup: 92 % of the lanes its samples need,
+  // the dragon at R = 5 64 %), where one set would be overwritten by the shadow ray of the hit
+  // in between.
   static thread_local std::vector<Batch> batch_sets_[2];
   std::vector<Batch>& batches_;
   static constexpr uint32_t kNotLoaded = std::numeric_limits<uint32_t>::max();
